@@ -1,0 +1,2 @@
+//! Lubricated cylindrical roller bearing model for real-time loops.
+#![no_std]

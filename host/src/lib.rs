@@ -1,0 +1,1 @@
+//! Host side of the bearing project (std, f64 where it is a reference).
