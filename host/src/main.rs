@@ -1,1 +1,30 @@
-fn main() {}
+//! `bearing`: the command-line front end of the host tools.
+//!
+//! Every subcommand lives in its own module under `cli/` with a clap `Args` type and a
+//! `run` function; this file only dispatches.
+
+use clap::{Parser, Subcommand};
+
+mod cli;
+
+#[derive(Parser)]
+#[command(name = "bearing", version, about = "Lubricated roller-bearing model: EHL film, bearing forces, shaft simulation")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {}
+
+fn main() -> std::process::ExitCode {
+    let cli = Cli::parse();
+    let result: anyhow::Result<()> = match cli.command {};
+    match result {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(err) => {
+            eprintln!("error: {err:#}");
+            std::process::ExitCode::FAILURE
+        }
+    }
+}
