@@ -1,2 +1,4 @@
 //! Lubricated cylindrical roller bearing model for real-time loops.
 #![no_std]
+
+pub mod film;
