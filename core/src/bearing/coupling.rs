@@ -33,9 +33,9 @@ use crate::film::{
 use crate::math::{exp, ln, sqrt};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step.
-pub const INNER_ITERATIONS: usize = 6;
+pub const INNER_ITERATIONS: usize = 4;
 /// Newton steps of the re-solve after the second slice pass.
-pub const REFINE_ITERATIONS: usize = 3;
+pub const REFINE_ITERATIONS: usize = 2;
 
 /// Bracket of the roller load in the scalar solve (N): 10⁻⁴ N … 10⁷ N.
 const LN_LOAD_MIN: f32 = -9.210_34;
@@ -218,7 +218,7 @@ fn solve_load(
         let missing = elastic - gap;
         let h = h.max(1.0e-30);
         let defined = missing > 0.0;
-        let residual = if defined { ln(missing) - ln(h) } else { -1.0 };
+        let residual = if defined { ln(missing / h) } else { -1.0 };
         let slope = inverse_exponent * elastic / missing.max(1.0e-30) - dh / h;
         if residual > 0.0 {
             hi = lam;

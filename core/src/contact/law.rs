@@ -87,8 +87,8 @@ impl BoundLaw {
         let (w, dw, d2w) = match self.law {
             ContactLaw::Palmgren => {
                 let w = self.palmgren_coefficient * pow(d, 10.0 / 9.0);
-                let dw = (10.0 / 9.0) * w / d;
-                (w, dw, (1.0 / 9.0) * dw / d)
+                let w_per_d = w / d;
+                (w, (10.0 / 9.0) * w_per_d, (10.0 / 81.0) * w_per_d / d)
             }
             ContactLaw::Lundberg => self.lundberg(d),
         };
