@@ -6,7 +6,8 @@ use bearing_core::{
     Bearing, BearingGeometry, BearingParams, ContactLaw, Crown, FilmModel, Lubricant, Material,
     OperatingState, Regression,
 };
-use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use criterion::{criterion_group, criterion_main, Criterion};
+use std::hint::black_box;
 
 fn hub_motor_bearing() -> Bearing<17, 10> {
     // PHYSICS.md §6.2: d_m 60 mm, D 8.8 mm × 15 mm, 17 rollers, 2 µm interference.

@@ -86,3 +86,5 @@ pub(crate) fn in_range(
         })
     }
 }
+
+impl core::error::Error for ParamError {}
