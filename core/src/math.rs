@@ -73,10 +73,15 @@ pub fn pow(x: f32, y: f32) -> f32 {
 }
 
 /// Sine and cosine of `x` (rad) at a fixed cost. Accurate to a few ulp for |x| ≲ 10⁴ (wrap
-/// growing angles into [0, 2π) before they get large); non-finite inputs are treated as 0.
+/// growing angles into [0, 2π) before they get large); non-finite inputs and |x| > 10⁶, where
+/// an f32 angle has no meaningful fraction of a turn left, are treated as 0.
 #[inline]
 pub fn sin_cos(x: f32) -> (f32, f32) {
-    let x = if x.is_finite() { x } else { 0.0 };
+    let x = if x.is_finite() && x.abs() <= 1.0e6 {
+        x
+    } else {
+        0.0
+    };
     // x = k·π/2 + r, |r| ≤ π/4, with a two-part π/2 (Cody–Waite).
     let v = x * core::f32::consts::FRAC_2_PI;
     let k = (v + if v >= 0.0 { 0.5 } else { -0.5 }) as i32;

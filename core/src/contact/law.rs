@@ -24,6 +24,9 @@ use crate::math::{exp, ln, pow};
 /// so k = 1.52873·10⁻¹⁰ · (2.3077·10¹¹)^0.9 = 2.5775 (checked in the tests).
 pub const PALMGREN_K: f32 = 2.5775;
 
+/// Largest approach the laws are evaluated at (m).
+const MAX_APPROACH_M: f32 = 1.0e-2;
+
 /// Newton steps used to invert the Lundberg law (from a Palmgren start; converged to f32).
 const LUNDBERG_NEWTON_STEPS: usize = 4;
 
@@ -83,7 +86,12 @@ impl BoundLaw {
     #[inline]
     pub(crate) fn load_per_length(&self, approach_m: f32) -> (f32, f32, f32) {
         let positive = approach_m > 0.0;
-        let d = if positive { approach_m } else { 1.0e-12 };
+        // Approaches beyond 1 cm are not elastic contact any more; the clamp keeps ∞ finite.
+        let d = if positive {
+            approach_m.min(MAX_APPROACH_M)
+        } else {
+            1.0e-12
+        };
         let (w, dw, d2w) = match self.law {
             ContactLaw::Palmgren => {
                 let w = self.palmgren_coefficient * pow(d, 10.0 / 9.0);
