@@ -99,7 +99,7 @@ impl BearingParams {
 }
 
 /// ln Q span of the film nodes before any step has loaded a roller: 10 N … 3 kN.
-const DEFAULT_LOAD_SPAN: (f32, f32) = (2.302_585, 8.006_368);
+const DEFAULT_LOAD_SPAN: (f32, f32) = (core::f32::consts::LN_10, 8.006_368);
 
 /// A bearing of `Z` rollers with `S` slices each, with its warm start.
 #[derive(Clone, Debug)]
