@@ -27,10 +27,10 @@
 use super::film_law::StepFilmLaw;
 use crate::contact::{RollerLoad, SlicedRoller};
 use crate::film::{ContactInput, Regime};
-use crate::math::{exp, ln, max, min};
+use crate::math::{exp, ln, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step.
-pub const INNER_ITERATIONS: usize = 3;
+pub const INNER_ITERATIONS: usize = 2;
 /// Newton steps of the re-solve after the second slice pass.
 pub const REFINE_ITERATIONS: usize = 2;
 
@@ -71,14 +71,32 @@ pub(crate) struct CoupledRoller {
 /// What a roller carries from one step to the next: the warm start.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct RollerMemory {
-    /// Power law fitted to the slices at the last step (None before the first step).
-    pub law: Option<PowerLaw>,
+    /// Power law fitted to the slices at the last step (meaningless before the first step).
+    pub law: StoredLaw,
     /// ln Q at the last step.
     pub ln_load: f32,
 }
 
+/// A power law that may not exist yet, chosen without a branch.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct StoredLaw {
+    law: PowerLaw,
+    valid: bool,
+}
+
+impl StoredLaw {
+    /// The stored law, or `fallback` before the first step.
+    fn select_or(&self, fallback: &PowerLaw) -> PowerLaw {
+        PowerLaw {
+            offset_m: select(self.valid, self.law.offset_m, fallback.offset_m),
+            ln_coefficient: select(self.valid, self.law.ln_coefficient, fallback.ln_coefficient),
+            exponent: select(self.valid, self.law.exponent, fallback.exponent),
+        }
+    }
+}
+
 /// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct PowerLaw {
     /// δ_off (m).
     offset_m: f32,
@@ -100,38 +118,35 @@ impl PowerLaw {
         approach_m: f32,
         tilt_rad: f32,
     ) -> Self {
+        // Both branches are computed and selected (see `math::select`): fixed work.
         let q = load.load_n;
         let k = load.stiffness_n_per_m;
-        let fit = q > FIT_MIN_N && k > 0.0;
-        let rho1 = if fit { k / q } else { 1.0 };
-        let rho2 = if fit {
-            load.stiffness_derivative_n_per_m2 / k
-        } else {
-            0.0
-        };
-        let curvature_fit = fit && rho1 - rho2 > 0.0;
-        let span = if curvature_fit {
-            1.0 / (rho1 - rho2)
-        } else {
-            (10.0 / 9.0) / rho1
-        };
-        let exponent = if curvature_fit {
-            min(max(span * rho1, 1.0), 4.0)
-        } else {
-            10.0 / 9.0
-        };
-        if fit {
-            Self {
-                offset_m: approach_m - span,
-                ln_coefficient: ln(q) - exponent * ln(span),
-                exponent,
-            }
-        } else {
-            Self {
-                offset_m: roller.touch_approach_tilted_m(tilt_rad),
-                ln_coefficient: ln(roller.nominal_coefficient()),
-                exponent: 10.0 / 9.0,
-            }
+        let fit = (q > FIT_MIN_N) & (k > 0.0);
+        let rho1 = select(fit, k / max(q, FIT_MIN_N), 1.0);
+        let rho2 = select(
+            fit,
+            load.stiffness_derivative_n_per_m2 / max(k, 1.0e-30),
+            0.0,
+        );
+        let curvature_fit = fit & (rho1 - rho2 > 0.0);
+        let span = select(
+            curvature_fit,
+            1.0 / max(rho1 - rho2, 1.0e-30),
+            (10.0 / 9.0) / rho1,
+        );
+        let exponent = select(curvature_fit, min(max(span * rho1, 1.0), 4.0), 10.0 / 9.0);
+        Self {
+            offset_m: select(
+                fit,
+                approach_m - span,
+                roller.touch_approach_tilted_m(tilt_rad),
+            ),
+            ln_coefficient: select(
+                fit,
+                ln(max(q, FIT_MIN_N)) - exponent * ln(span),
+                roller.ln_nominal_coefficient(),
+            ),
+            exponent,
         }
     }
 }
@@ -152,13 +167,9 @@ fn solve_load(
     let gap = geometric_approach_m - law.offset_m;
     let inverse_exponent = 1.0 / law.exponent;
     let ln_dry = law.ln_coefficient + law.exponent * ln(max(gap, 1.0e-30));
-    let mut lo = if gap > 0.0 {
-        max(ln_dry, LN_LOAD_MIN)
-    } else {
-        LN_LOAD_MIN
-    };
+    let mut lo = select(gap > 0.0, max(ln_dry, LN_LOAD_MIN), LN_LOAD_MIN);
     let mut hi = max(LN_LOAD_MAX, lo);
-    let mut lam = if start > lo && start < hi {
+    let mut lam = if (start > lo) & (start < hi) {
         start
     } else {
         lo + 0.5
@@ -169,19 +180,18 @@ fn solve_load(
         let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
         let missing = elastic - gap;
         let defined = missing > 0.0;
-        let residual = if defined { ln(missing / h) } else { -1.0 };
+        let residual = select(defined, ln(max(missing, 1.0e-30) / h), -1.0);
         let slope = inverse_exponent * elastic / max(missing, 1.0e-30) - dh / h;
-        if residual > 0.0 {
-            hi = lam;
-        } else {
-            lo = lam;
-        }
+        let above = residual > 0.0;
+        // Plain values on both sides: a conditional move, no branch.
+        hi = if above { lam } else { hi };
+        lo = if above { lo } else { lam };
         let newton = lam - residual / slope;
-        lam = if defined && newton >= lo && newton <= hi {
-            newton
-        } else {
-            0.5 * (lo + hi)
-        };
+        lam = select(
+            defined & (newton >= lo) & (newton <= hi),
+            newton,
+            0.5 * (lo + hi),
+        );
     }
     lam
 }
@@ -199,10 +209,9 @@ pub(crate) fn solve_roller<const S: usize>(
 ) -> CoupledRoller {
     // 1. Solve with last step's summary of the slices (or, first time, a straight roller's
     //    law from its first touching slice).
-    let law0 = match memory.law {
-        Some(law) => law,
-        None => PowerLaw::fit(roller, &RollerLoad::default(), 0.0, tilt_rad),
-    };
+    // (Both computed and selected, so the first step costs what every step costs.)
+    let untouched = PowerLaw::fit(roller, &RollerLoad::default(), 0.0, tilt_rad);
+    let law0 = memory.law.select_or(&untouched);
     let lam1 = solve_load(
         &law0,
         films,
@@ -226,30 +235,28 @@ pub(crate) fn solve_roller<const S: usize>(
     );
     let approach_m = geometric_approach_m + films.sum_at(lam2).total_m;
     let mut load = r1;
-    load.load_n = if approach_m <= law1.offset_m {
-        0.0
-    } else {
-        exp(law1.ln_coefficient + law1.exponent * ln(approach_m - law1.offset_m))
-    };
+    let elastic = approach_m - law1.offset_m;
+    load.load_n = select(
+        elastic > 0.0,
+        exp(law1.ln_coefficient + law1.exponent * ln(max(elastic, 1.0e-30))),
+        0.0,
+    );
     load.moment_nm += load.stiffness_moment_n * (approach_m - approach1);
     let ln_load = ln(max(load.load_n, 1.0e-4));
     *memory = RollerMemory {
-        law: Some(law1),
+        law: StoredLaw {
+            law: law1,
+            valid: true,
+        },
         ln_load,
     };
 
     let sum = films.sum_at(ln_load);
     let per_contact = films.contacts_at(ln_load, &sum);
     let regime = |k: usize| {
-        let (offset, l) = (
-            ln_m_offsets.get(k).copied().unwrap_or(0.0),
-            ln_l.get(k).copied().unwrap_or(0.0),
-        );
-        if films.lubricated {
-            Regime::from_ln_moes(ln_load - offset, l)
-        } else {
-            Regime::Dry
-        }
+        let offset = ln_m_offsets.get(k).copied().unwrap_or(0.0);
+        let l = ln_l.get(k).copied().unwrap_or(0.0);
+        Regime::from_ln_moes(ln_load - offset, l)
     };
     CoupledRoller {
         load,
