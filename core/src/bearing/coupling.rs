@@ -24,7 +24,7 @@
 //! With a warm start from the previous step this meets |Δh|/h ≤ 10⁻³ (tested against a
 //! converged f64 iteration over the PHYSICS.md §5.3 domain).
 
-use super::film_law::StepFilmLaw;
+use super::film_law::{FilmSum, StepFilmLaw};
 use crate::contact::{RollerLoad, SlicedRoller};
 use crate::film::{ContactInput, Regime};
 use crate::math::{exp, ln, max, min, select};
@@ -151,19 +151,30 @@ impl PowerLaw {
     }
 }
 
+/// Result of a scalar solve: λ = ln Q and the film sum there.
+#[derive(Clone, Copy, Debug)]
+struct Solved {
+    ln_load: f32,
+    /// H at λ (m), extrapolated linearly from the last evaluation.
+    film_m: f32,
+    /// dH/dλ at the last evaluation (m).
+    film_slope_m: f32,
+}
+
 /// Solve δ_off + (Q/L)^(1/n) = δ_geo + H(Q) for λ = ln Q by `iterations` safeguarded Newton
 /// steps from `start`, in the log form Φ(λ) = ln D − ln H with D = δ_off − δ_geo + (Q/L)^(1/n)
 /// the elastic approach still missing. Both sides are close to linear in λ (EHL: ln H ≈ −0.1λ,
 /// hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges in a few steps from
 /// anywhere in the bracket; Φ' > 0 throughout. The dry load (film ≡ 0) bounds the root from
-/// below: the film only adds approach.
+/// below: the film only adds approach. The film sum at the returned λ is the last evaluation
+/// continued by its tangent (second-order accurate, and free).
 fn solve_load(
     law: &PowerLaw,
     films: &StepFilmLaw,
     geometric_approach_m: f32,
     start: f32,
     iterations: usize,
-) -> f32 {
+) -> Solved {
     let gap = geometric_approach_m - law.offset_m;
     let inverse_exponent = 1.0 / law.exponent;
     let ln_dry = law.ln_coefficient + law.exponent * ln(max(gap, 1.0e-30));
@@ -174,10 +185,12 @@ fn solve_load(
     } else {
         lo + 0.5
     };
+    let mut last = (lam, 0.0, 0.0);
     for _ in 0..iterations {
         let elastic = exp(inverse_exponent * (lam - law.ln_coefficient));
         let f = films.sum_at(lam);
         let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
+        last = (lam, f.total_m, dh);
         let missing = elastic - gap;
         let defined = missing > 0.0;
         let residual = select(defined, ln(max(missing, 1.0e-30) / h), -1.0);
@@ -193,7 +206,12 @@ fn solve_load(
             0.5 * (lo + hi),
         );
     }
-    lam
+    let (at, film_m, film_slope_m) = last;
+    Solved {
+        ln_load: lam,
+        film_m: max(film_m + film_slope_m * (lam - at), 0.0),
+        film_slope_m,
+    }
 }
 
 /// Solve one roller: geometric approach `δ_geo` (m), tilt `ψ` (rad), with its memory of the
@@ -212,37 +230,35 @@ pub(crate) fn solve_roller<const S: usize>(
     // (Both computed and selected, so the first step costs what every step costs.)
     let untouched = PowerLaw::fit(roller, &RollerLoad::default(), 0.0, tilt_rad);
     let law0 = memory.law.select_or(&untouched);
-    let lam1 = solve_load(
+    let solved1 = solve_load(
         &law0,
         films,
         geometric_approach_m,
         memory.ln_load,
         INNER_ITERATIONS,
     );
-    let approach1 = geometric_approach_m + films.sum_at(lam1).total_m;
+    let approach1 = geometric_approach_m + solved1.film_m;
 
     // 2. The one slice pass, a fresh power law there and a short re-solve. The law matches the
     //    slices in load, stiffness and curvature at `approach1`, so the remaining error is third
     //    order in the step from `approach1`; load and moment follow the law.
     let r1 = roller.evaluate(approach1, tilt_rad);
     let law1 = PowerLaw::fit(roller, &r1, approach1, tilt_rad);
-    let lam2 = solve_load(
+    let solved2 = solve_load(
         &law1,
         films,
         geometric_approach_m,
         ln(max(r1.load_n, 1.0e-4)),
         REFINE_ITERATIONS,
     );
-    let approach_m = geometric_approach_m + films.sum_at(lam2).total_m;
+    let approach_m = geometric_approach_m + solved2.film_m;
+    let ln_load = solved2.ln_load;
+    let load_n = exp(ln_load);
     let mut load = r1;
-    let elastic = approach_m - law1.offset_m;
-    load.load_n = select(
-        elastic > 0.0,
-        exp(law1.ln_coefficient + law1.exponent * ln(max(elastic, 1.0e-30))),
-        0.0,
-    );
+    // At the root, Q = e^λ is the law's load at `approach_m`; a roller whose approach stays
+    // short of the law's offset (no film, separated) carries nothing.
+    load.load_n = select(approach_m > law1.offset_m, load_n, 0.0);
     load.moment_nm += load.stiffness_moment_n * (approach_m - approach1);
-    let ln_load = ln(max(load.load_n, 1.0e-4));
     *memory = RollerMemory {
         law: StoredLaw {
             law: law1,
@@ -251,7 +267,11 @@ pub(crate) fn solve_roller<const S: usize>(
         ln_load,
     };
 
-    let sum = films.sum_at(ln_load);
+    let sum = FilmSum {
+        total_m: solved2.film_m,
+        slope_m: solved2.film_slope_m,
+        inv_load: 1.0 / load_n,
+    };
     let per_contact = films.contacts_at(ln_load, &sum);
     let regime = |k: usize| {
         let offset = ln_m_offsets.get(k).copied().unwrap_or(0.0);
@@ -263,7 +283,7 @@ pub(crate) fn solve_roller<const S: usize>(
         approach_m,
         ln_load,
         films: per_contact,
-        film_slope_m_per_n: sum.slope_m / max(load.load_n, 1.0e-4),
+        film_slope_m_per_n: sum.slope_m / load_n,
         regimes: [regime(0), regime(1)],
     }
 }

@@ -72,6 +72,8 @@ pub(crate) struct StepFilmLaw {
     pub martin: [f32; 2],
     /// Their sum (m·N).
     pub martin_sum: f32,
+    /// Minimum-to-central EHL film ratio per contact at the node centre, and its slope in λ.
+    pub min_ratio: [(f32, f32); 2],
 }
 
 /// Film sum of one roller at λ = ln Q.
@@ -137,6 +139,10 @@ impl StepFilmLaw {
             central: [log3(ci), log3(co)],
             minimum: [log3(mi), log3(mo)],
             central_sum: log3(sum),
+            min_ratio: [
+                min_ratio(&log3(ci), &log3(mi)),
+                min_ratio(&log3(co), &log3(mo)),
+            ],
             martin,
             martin_sum: martin[0] + martin[1],
         }
@@ -166,14 +172,14 @@ impl StepFilmLaw {
         let inv_load = sum.inv_load;
         let mut out = [(0.0, 0.0); 2];
         let mut blended_sum = 0.0;
-        for (((o, c), m), &b) in out
+        for (((o, c), &(r0, r1)), &b) in out
             .iter_mut()
             .zip(self.central.iter())
-            .zip(self.minimum.iter())
+            .zip(self.min_ratio.iter())
             .zip(self.martin.iter())
         {
             let he = exp(c.at(ln_load).0);
-            let ratio = exp(m.value - c.value) * (1.0 + (m.slope - c.slope) * (ln_load - c.centre));
+            let ratio = r0 * (1.0 + r1 * (ln_load - c.centre));
             let hm = he * ratio;
             let hr = b * inv_load;
             let hr_min = hr * (MARTIN_MINIMUM / MARTIN_CENTRAL);
@@ -190,6 +196,14 @@ impl StepFilmLaw {
         }
         out
     }
+}
+
+/// (ratio, d ln ratio/dλ) of the minimum to the central film at the centre of the nodes.
+fn min_ratio(central: &LogParabola, minimum: &LogParabola) -> (f32, f32) {
+    (
+        exp(minimum.value - central.value),
+        minimum.slope - central.slope,
+    )
 }
 
 /// Which model serves a contact of kind `template` at load `load_n`.
