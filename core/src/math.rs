@@ -74,7 +74,7 @@ pub fn log2(x: f32) -> f32 {
     // Mantissa in [1, 2), re-centred to [√½, √2) so the polynomial argument stays small.
     let mantissa = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
     let high = mantissa > SQRT_2;
-    let m = select(high, mantissa * 0.5, mantissa);
+    let m = if high { mantissa * 0.5 } else { mantissa };
     let e = (exponent + i32::from(high)) as f32;
     let t = m - 1.0;
     e + t * horner(&LOG2_POLY, t)
@@ -122,7 +122,7 @@ pub fn pow(x: f32, y: f32) -> f32 {
 #[inline]
 pub fn pow_10_9(x: f32) -> f32 {
     let positive = x > 0.0;
-    let x = select(positive, min(x, 1.0), 1.0);
+    let x = if positive { min(x, 1.0) } else { 1.0 };
     const BIAS: i32 = 127 << 23;
     // Found by a scan of the worst relative error over 10⁻¹³ … 1 (fast-inverse-square-root
     // style); without it the first guess is off by up to 6 %.
@@ -135,7 +135,8 @@ pub fn pow_10_9(x: f32) -> f32 {
         y * (8.0 / 9.0) + x / (9.0 * y8)
     };
     let root = newton(newton(newton(guess)));
-    select(positive, x * root, 0.0)
+    // Masked by a multiplication: the root stays in the data flow (see `select`).
+    x * root * if positive { 1.0 } else { 0.0 }
 }
 
 /// Sine and cosine of `x` (rad) at a fixed cost. Accurate to a few ulp for |x| ≲ 10⁴ (wrap
