@@ -98,6 +98,9 @@ impl BearingParams {
     }
 }
 
+/// Steps [`Bearing::settle`] needs from a cold start (tested over the PHYSICS.md §5.3 domain).
+pub const SETTLE_STEPS: usize = 6;
+
 /// Floor of the entrainment speed in the film arithmetic (m/s); see `contact_contexts`.
 const MIN_ENTRAINMENT_M_S: f32 = 1.0e-6;
 
@@ -292,7 +295,9 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     }
 
     /// Run [`Bearing::step`] `steps` times at the same state, so the warm start converges
-    /// before a real-time loop begins (three steps reach |Δh|/h ≤ 10⁻³ from a cold start).
+    /// before a real-time loop begins ([`SETTLE_STEPS`] reach |Δh|/h ≤ 10⁻³ from a cold start;
+    /// a crowned roller just touching needs four: its first step has neither a power law of its
+    /// own nor film nodes at its load).
     pub fn settle<F: FilmModel + ?Sized>(
         &mut self,
         film: &F,

@@ -226,8 +226,8 @@ proptest! {
         prop_assert!(dh <= 1e-3, "h {} vs {h_ref} ({dh:.2e}), Q {} vs {q_ref}", r.central_film_in_m, r.load_n);
     }
 
-    /// Cold start (no warm start at all): [`Bearing::settle`] (three steps at the same state)
-    /// reaches the same 1e-3 accuracy. (A single cold step of a crowned roller near first touch
+    /// Cold start (no warm start at all): [`Bearing::settle`] ([`SETTLE_STEPS`] steps at the
+    /// same state) reaches the same 1e-3 accuracy. (A single cold step of a crowned roller near first touch
     /// can be tens of percent off: settle before a real-time loop starts.)
     #[test]
     fn film_fixed_point_from_a_cold_start_after_settling(
@@ -246,7 +246,7 @@ proptest! {
         let s = OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega, 0.0).unwrap();
         let (q_ref, h_ref) = reference_roller(&p, 10, x as f64, omega as f64);
         prop_assume!(q_ref > 1.0 && q_ref < 5000.0);
-        let r = b.settle(&Regression, &s, 3).rollers[0];
+        let r = b.settle(&Regression, &s, SETTLE_STEPS).rollers[0];
         let dh = (r.central_film_in_m as f64 / h_ref - 1.0).abs();
         prop_assert!(dh <= 1e-3, "h {} vs {h_ref} ({dh:.2e}), Q {} vs {q_ref}", r.central_film_in_m, r.load_n);
     }
