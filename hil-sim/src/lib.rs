@@ -2,4 +2,6 @@
 //! bearing model on the host and on an emulated Cortex-M4, and checks the timing budget and the
 //! accuracy against the full numerical solver.
 
+pub mod replay;
 pub mod trace;
+pub mod wiring;

@@ -22,15 +22,20 @@ enum Command {
     /// Inspect, validate, convert and synthesise trace files.
     #[command(subcommand)]
     Trace(cli::trace_cmd::TraceCommand),
+    /// Replay a trace through the bearing model on the host: timing budget and accuracy.
+    Replay(cli::replay_cmd::ReplayArgs),
 }
 
 fn main() -> std::process::ExitCode {
     let cli = Cli::parse();
-    let result: anyhow::Result<()> = match cli.command {
-        Command::Trace(command) => cli::trace_cmd::run(command),
+    let result: anyhow::Result<std::process::ExitCode> = match cli.command {
+        Command::Trace(command) => {
+            cli::trace_cmd::run(command).map(|()| std::process::ExitCode::SUCCESS)
+        }
+        Command::Replay(args) => cli::replay_cmd::run(&args),
     };
     match result {
-        Ok(()) => std::process::ExitCode::SUCCESS,
+        Ok(code) => code,
         Err(err) => {
             eprintln!("error: {err:#}");
             std::process::ExitCode::FAILURE
