@@ -21,14 +21,11 @@ pub mod stats;
 #[cfg(test)]
 mod tests;
 
-pub use bearing_core::film::FilmSource;
+pub use crate::outputs::{FilmSource, StepOutputs, MAX_ROLLERS};
 pub use engine::{replay, ReplayConfig, ReplayRun};
 
 use crate::trace::Sample;
 use std::fmt;
-
-/// Largest number of rollers a [`StepOutputs`] holds (the reference bearings have 12 and 17).
-pub const MAX_ROLLERS: usize = 32;
 
 /// The film model the stepper uses (`--film`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
@@ -52,44 +49,6 @@ impl FilmChoice {
             FilmChoice::F32 => "f32",
             FilmChoice::Regression => "regression",
             FilmChoice::Dry => "dry",
-        }
-    }
-}
-
-/// What one bearing step produces, in fixed-size arrays so that stepping never allocates.
-/// Only the first `rollers` entries of each array are meaningful.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct StepOutputs {
-    /// Force of the rollers on the inner race, (F_x, F_y) (N), PHYSICS.md §4.
-    pub force_n: [f32; 2],
-    /// Cage angle θ_c (rad): roller j sits at θ_c + 2πj/Z (PHYSICS.md §2). The reference needs
-    /// it to put the rollers where the stepper had them.
-    pub cage_angle_rad: f32,
-    /// Number of rollers, Z.
-    pub rollers: usize,
-    /// Roller load Q_j (N), 0 for an unloaded roller.
-    pub roller_load_n: [f32; MAX_ROLLERS],
-    /// Central film at the inner-race contact, h_in,j (m).
-    pub film_inner_m: [f32; MAX_ROLLERS],
-    /// Central film at the outer-race contact, h_out,j (m).
-    pub film_outer_m: [f32; MAX_ROLLERS],
-    /// Which model served the inner contact.
-    pub source_inner: [FilmSource; MAX_ROLLERS],
-    /// Which model served the outer contact.
-    pub source_outer: [FilmSource; MAX_ROLLERS],
-}
-
-impl Default for StepOutputs {
-    fn default() -> Self {
-        Self {
-            force_n: [0.0; 2],
-            cage_angle_rad: 0.0,
-            rollers: 0,
-            roller_load_n: [0.0; MAX_ROLLERS],
-            film_inner_m: [0.0; MAX_ROLLERS],
-            film_outer_m: [0.0; MAX_ROLLERS],
-            source_inner: [FilmSource::None; MAX_ROLLERS],
-            source_outer: [FilmSource::None; MAX_ROLLERS],
         }
     }
 }
