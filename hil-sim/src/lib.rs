@@ -9,6 +9,7 @@
 
 pub mod kernel;
 pub mod outputs;
+pub mod qemu;
 pub mod replay;
 pub mod trace;
 pub mod wiring;

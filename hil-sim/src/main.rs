@@ -24,6 +24,8 @@ enum Command {
     Trace(cli::trace_cmd::TraceCommand),
     /// Replay a trace through the bearing model on the host: timing budget and accuracy.
     Replay(cli::replay_cmd::ReplayArgs),
+    /// Replay a trace on the emulated Cortex-M4 (QEMU) and compare with the host.
+    Qemu(cli::qemu_cmd::QemuArgs),
 }
 
 fn main() -> std::process::ExitCode {
@@ -33,6 +35,7 @@ fn main() -> std::process::ExitCode {
             cli::trace_cmd::run(command).map(|()| std::process::ExitCode::SUCCESS)
         }
         Command::Replay(args) => cli::replay_cmd::run(&args),
+        Command::Qemu(args) => cli::qemu_cmd::run(&args),
     };
     match result {
         Ok(code) => code,

@@ -1,5 +1,6 @@
 //! Subcommands of `hil-sim`, one module each, plus the argument checks they share.
 
+pub mod qemu_cmd;
 pub mod replay_cmd;
 pub mod trace_cmd;
 

@@ -31,7 +31,7 @@ pub enum TraceCommand {
 #[derive(Args)]
 pub struct CheckArgs {
     /// Largest allowed relative deviation of a time step from 1/rate.
-    #[arg(long, default_value_t = ValidationOptions::default().gap_tolerance)]
+    #[arg(long, default_value_t = ValidationOptions::default().gap_tolerance, allow_negative_numbers = true)]
     pub gap_tolerance: f64,
 }
 
@@ -68,13 +68,13 @@ pub struct SynthArgs {
     #[arg(long, default_value = "mineral_80mpas")]
     pub lubricant: String,
     /// Sample rate (Hz).
-    #[arg(long, default_value_t = 10_000.0)]
+    #[arg(long, default_value_t = 10_000.0, allow_negative_numbers = true)]
     pub rate_hz: f64,
     /// Number of samples.
     #[arg(long, default_value_t = 1000)]
     pub count: usize,
     /// Shaft speed (rpm).
-    #[arg(long, default_value_t = 12_000.0)]
+    #[arg(long, default_value_t = 12_000.0, allow_negative_numbers = true)]
     pub speed_rpm: f64,
     /// Static displacement of the orbit centre in x (m).
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
@@ -83,13 +83,13 @@ pub struct SynthArgs {
     #[arg(long, default_value_t = -5.0e-6, allow_negative_numbers = true)]
     pub offset_y_m: f64,
     /// Orbit radius (m).
-    #[arg(long, default_value_t = 1.0e-6)]
+    #[arg(long, default_value_t = 1.0e-6, allow_negative_numbers = true)]
     pub radius_m: f64,
     /// Whirl frequency (Hz).
     #[arg(long, default_value_t = 200.0, allow_negative_numbers = true)]
     pub whirl_hz: f64,
     /// Tilt amplitude about x and y (rad); omit for a trace without tilt.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub tilt_rad: Option<f64>,
 }
 
