@@ -8,18 +8,30 @@ use clap::{Parser, Subcommand};
 mod cli;
 
 #[derive(Parser)]
-#[command(name = "bearing", version, about = "Lubricated roller-bearing model: EHL film, bearing forces, shaft simulation")]
+#[command(
+    name = "bearing",
+    version,
+    about = "Lubricated roller-bearing model: EHL film, bearing forces, shaft simulation"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Film thickness and Hertz figures of one contact, every film model side by side.
+    Film(cli::film::FilmArgs),
+    /// Static equilibrium of a bearing under a radial load (lubricated, and dry with --dry).
+    Static(cli::statics::StaticArgs),
+}
 
 fn main() -> std::process::ExitCode {
     let cli = Cli::parse();
-    let result: anyhow::Result<()> = match cli.command {};
+    let result: anyhow::Result<()> = match cli.command {
+        Command::Film(args) => cli::film::run(args),
+        Command::Static(args) => cli::statics::run(args),
+    };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,
         Err(err) => {

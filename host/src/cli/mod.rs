@@ -1,1 +1,5 @@
 //! One module per `bearing` subcommand.
+
+pub mod common;
+pub mod film;
+pub mod statics;
