@@ -3,7 +3,7 @@
 //! goal for the bearing step is p99.9 ≤ 10 µs; criterion reports the mean and spread, the
 //! percentiles come from `hil-sim replay`.
 
-use bearing_hil::kernel::Kernel;
+use bearing_hil::kernel::{FilmKind, Kernel};
 use bearing_hil::outputs::StepOutputs;
 use bearing_hil::trace::synthetic::Whirl;
 use bearing_hil::trace::TraceMeta;
@@ -21,21 +21,26 @@ fn kernel_step(c: &mut Criterion) {
     .trace(
         TraceMeta {
             bearing: "hub_motor".into(),
-            lubricant: "mineral_80mpas".into(),
+            lubricant: "thesis_oil".into(),
             sample_rate_hz: 10_000.0,
         },
         4096,
     );
-    let mut kernel = Kernel::new("hub_motor", 10_000.0).expect("hub_motor is a known bearing");
+    let mut kernel = Kernel::new("hub_motor", "thesis_oil", 10_000.0, FilmKind::Regression)
+        .expect("hub_motor is a known bearing");
+    kernel.prime(&trace.samples[0]);
     let mut out = StepOutputs::default();
     let mut index = 0usize;
-    c.bench_function("hil kernel step, hub motor (17 rollers)", |b| {
-        b.iter(|| {
-            let sample = &trace.samples[index % trace.samples.len()];
-            index += 1;
-            let _ = kernel.step(black_box(sample), black_box(&mut out));
-        })
-    });
+    c.bench_function(
+        "hil kernel step, hub motor (17 rollers), regression film",
+        |b| {
+            b.iter(|| {
+                let sample = &trace.samples[index % trace.samples.len()];
+                index += 1;
+                let _ = kernel.step(black_box(sample), black_box(&mut out));
+            })
+        },
+    );
 }
 
 criterion_group!(benches, kernel_step);

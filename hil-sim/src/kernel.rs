@@ -1,86 +1,151 @@
 //! The step kernel: what happens to one trace sample, identically on the host and on the
 //! Cortex-M4 firmware (which includes this file with `#[path]`).
 //!
-//! It maps the trace's bearing identifier to a bearing, keeps the state that carries from one
-//! sample to the next (the cage angle), and fills [`StepOutputs`]. Today it computes the roller
-//! kinematics of PHYSICS.md §2 and the geometric approach of §4, δ_j = x cos θ_j + y sin θ_j − g_r;
-//! loads, films and forces stay zero until the core's bearing step (`bearing_core::bearing`)
-//! is called here — that call replaces the body of [`Kernel::step`] and nothing else in the
-//! harness changes.
+//! It maps the trace's bearing and lubricant identifiers to the core's [`Bearing`] (the
+//! parameters of `configs/<bearing>.toml`, PHYSICS.md §6; a test checks they agree with the
+//! config files), keeps the state that carries from one sample to the next (the cage angle and
+//! the core's warm start), turns each sample into an [`OperatingState`], runs the core's
+//! bearing step with the chosen film model and copies the result into [`StepOutputs`].
 //!
-//! Determinism (ARCHITECTURE.md, rules for the core): the time step is the nominal 1/rate of the
-//! trace (validated to within the gap tolerance), not the difference of the f64 time stamps,
-//! because f64 arithmetic is software-emulated on the M4F and its cost depends on the operands.
-//! The roller angles are produced by rotating (sin θ_c, cos θ_c) by 2π/Z, so one `sincosf` per
-//! step serves all rollers.
+//! Determinism (ARCHITECTURE.md, rules for the core): the cage angle advances by the nominal
+//! time step 1/rate of the trace (validated to within the gap tolerance), not by the difference
+//! of the f64 time stamps, because f64 arithmetic is software-emulated on the M4F and its cost
+//! depends on the operands; it is wrapped into [0, 2π) by one float-to-integer conversion, not
+//! by `floorf`, whose cost depends on the argument's exponent. The warm start is converged
+//! before the loop by [`Kernel::prime`], so every timed step does the same work.
 
 use super::outputs::{StepOutputs, MAX_ROLLERS};
 use super::wire::Sample;
+use bearing_core::{
+    Bearing, BearingGeometry, BearingOutput, BearingParams, ContactLaw, Crown, Lubricant, Material,
+    OperatingState, Regression, StepStatus,
+};
 
-/// Why a kernel cannot be built for a trace.
+/// Slices per roller: the host tools' choice (`bearing_host::rolling::SLICES`), for which the
+/// core tests slice-count independence.
+pub const SLICES: usize = 10;
+/// Steps of [`Kernel::prime`]: the core converges its warm start to |Δh|/h ≤ 10⁻³ from a cold
+/// start in three (`Bearing::settle`).
+pub const PRIME_STEPS: usize = 3;
+
+/// Which film model the step uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum KernelError {
-    /// The trace's bearing identifier names no known bearing.
-    UnknownBearing,
-    /// The sample rate is not finite and positive.
-    BadSampleRate,
+pub enum FilmKind {
+    /// The integer (quantised) network with its fallback.
+    Int,
+    /// The f32 network with its fallback.
+    F32,
+    /// The regression formulas.
+    Regression,
+    /// No film (h ≡ 0).
+    Dry,
 }
 
-/// Why one step failed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum KernelFault {
-    /// A sample value is NaN or infinite (validated traces never have one).
-    NonFiniteSample,
-}
+impl FilmKind {
+    /// The name on the command line and in `film.txt` (the firmware's film choice).
+    pub fn name(self) -> &'static str {
+        match self {
+            FilmKind::Int => "int",
+            FilmKind::F32 => "f32",
+            FilmKind::Regression => "regression",
+            FilmKind::Dry => "dry",
+        }
+    }
 
-/// Geometry of a cylindrical roller bearing (PHYSICS.md §2).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BearingGeometry {
-    /// Number of rollers, Z.
-    pub rollers: usize,
-    /// Pitch diameter, d_m (m).
-    pub pitch_diameter_m: f32,
-    /// Roller diameter, D (m).
-    pub roller_diameter_m: f32,
-    /// Radial internal clearance per roller, g_r (m); negative for interference.
-    pub clearance_m: f32,
-}
-
-/// The bearings traces are recorded for, by identifier (PHYSICS.md §6).
-pub fn geometry(bearing_id: &str) -> Option<BearingGeometry> {
-    match bearing_id {
-        // §6.2: pitch diameter 60 mm, rollers Ø8.8 mm, 17 rollers, radial interference 2 µm.
-        "hub_motor" => Some(BearingGeometry {
-            rollers: 17,
-            pitch_diameter_m: 0.060,
-            roller_diameter_m: 0.0088,
-            clearance_m: -2.0e-6,
-        }),
-        // §6.1: inner raceway Ø31.5 mm and outer Ø46.5 mm give d_m = 39 mm; rollers Ø7.5 mm,
-        // 12 rollers, zero clearance.
-        "nu205" => Some(BearingGeometry {
-            rollers: 12,
-            pitch_diameter_m: 0.039,
-            roller_diameter_m: 0.0075,
-            clearance_m: 0.0,
-        }),
-        _ => None,
+    /// The kind of a name (surrounding whitespace ignored).
+    pub fn from_name(name: &[u8]) -> Option<FilmKind> {
+        let trimmed = name.trim_ascii();
+        [
+            FilmKind::Int,
+            FilmKind::F32,
+            FilmKind::Regression,
+            FilmKind::Dry,
+        ]
+        .into_iter()
+        .find(|kind| kind.name().as_bytes() == trimmed)
     }
 }
 
-/// 2π in f32.
+/// Why a kernel cannot be built for a trace.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum KernelError {
+    /// The trace's bearing identifier names no known bearing.
+    UnknownBearing,
+    /// The trace's lubricant identifier names no known lubricant.
+    UnknownLubricant,
+    /// The sample rate is not finite and positive.
+    BadSampleRate,
+    /// The film model is not available in the core yet.
+    FilmModelUnavailable(FilmKind),
+    /// The core refused a parameter (a bug in the tables below).
+    Parameter(bearing_core::ParamError),
+}
+
+/// Why one step failed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum KernelFault {
+    /// The core refused the operating state; the field is named.
+    Rejected(bearing_core::ParamError),
+}
+
+/// The bearing geometry of an identifier: `configs/<identifier>.toml` (PHYSICS.md §6).
+pub fn geometry(bearing_id: &str) -> Result<BearingGeometry, KernelError> {
+    let logarithmic = Crown::Logarithmic { scale: 1.0 };
+    match bearing_id {
+        // §6.2: pitch diameter 60 mm, rollers Ø8.8 mm × 15 mm, 17 rollers, 2 µm interference.
+        "hub_motor" => BearingGeometry::new(0.060, 0.0088, 0.015, 17, logarithmic, -2.0e-6),
+        // §6.1: raceways Ø31.5 / Ø46.5 mm give d_m = 39 mm; rollers Ø7.5 mm × 9 mm, 12 rollers,
+        // zero clearance.
+        "nu205" => BearingGeometry::new(0.039, 0.0075, 0.009, 12, logarithmic, 0.0),
+        _ => return Err(KernelError::UnknownBearing),
+    }
+    .map_err(KernelError::Parameter)
+}
+
+/// The lubricant of an identifier. `thesis_oil`: η₀ = 0.08 Pa·s, α = 2.1·10⁻⁸ 1/Pa,
+/// ρ₀ = 833.8 kg/m³, the oil of both reference machines (PHYSICS.md §6.1, §6.2).
+pub fn lubricant(lubricant_id: &str) -> Result<Lubricant, KernelError> {
+    match lubricant_id {
+        "thesis_oil" => Lubricant::new(0.08, 2.1e-8, 833.8).map_err(KernelError::Parameter),
+        _ => Err(KernelError::UnknownLubricant),
+    }
+}
+
+/// The full parameters: steel rings and rollers, Palmgren slices, f_damp = 10⁻⁵ s (the
+/// `[model]` of both config files, inside the thesis' 0.25…2.5·10⁻⁵ s, PHYSICS.md §4).
+pub fn params(bearing_id: &str, lubricant_id: &str) -> Result<BearingParams, KernelError> {
+    BearingParams::new(
+        geometry(bearing_id)?,
+        Material::STEEL,
+        Material::STEEL,
+        lubricant(lubricant_id)?,
+        ContactLaw::Palmgren,
+        1.0e-5,
+    )
+    .map_err(KernelError::Parameter)
+}
+
+/// The core's bearing at the roller count of each known identifier.
+// The variants differ by five rollers' state (≈ 400 B); boxing would need a heap, which the
+// firmware does not have, and there is one kernel per replay.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Debug)]
+enum Model {
+    HubMotor(Bearing<17, SLICES>),
+    Nu205(Bearing<12, SLICES>),
+}
+
+/// 2π and its inverse in f32.
 const TAU: f32 = core::f32::consts::TAU;
+const INV_TAU: f32 = 1.0 / core::f32::consts::TAU;
 
 /// The per-trace stepping state.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Kernel {
-    geometry: BearingGeometry,
-    /// ω_c / ω = (1 − γ)/2 with γ = D/d_m (PHYSICS.md §2).
-    cage_ratio: f32,
+    model: Model,
+    film: FilmKind,
     /// Nominal time step 1/rate (s).
     period_s: f32,
-    /// sin and cos of the roller pitch 2π/Z.
-    pitch_sin_cos: (f32, f32),
     /// Cage angle θ_c in [0, 2π) (rad).
     cage_angle_rad: f32,
     /// No step taken yet (the first sample defines θ_c = 0).
@@ -88,133 +153,143 @@ pub struct Kernel {
 }
 
 impl Kernel {
-    /// The kernel for a trace of `bearing_id` sampled at `sample_rate_hz`.
-    pub fn new(bearing_id: &str, sample_rate_hz: f64) -> Result<Kernel, KernelError> {
-        let geometry = geometry(bearing_id).ok_or(KernelError::UnknownBearing)?;
+    /// The kernel for a trace of `bearing_id` in `lubricant_id` sampled at `sample_rate_hz`,
+    /// stepping with `film`.
+    pub fn new(
+        bearing_id: &str,
+        lubricant_id: &str,
+        sample_rate_hz: f64,
+        film: FilmKind,
+    ) -> Result<Kernel, KernelError> {
+        if matches!(film, FilmKind::Int | FilmKind::F32) {
+            return Err(KernelError::FilmModelUnavailable(film));
+        }
         if !(sample_rate_hz.is_finite() && sample_rate_hz > 0.0) {
             return Err(KernelError::BadSampleRate);
         }
-        let gamma = geometry.roller_diameter_m / geometry.pitch_diameter_m;
+        let params = params(bearing_id, lubricant_id)?;
+        let model = match bearing_id {
+            "hub_motor" => Model::HubMotor(Bearing::new(params).map_err(KernelError::Parameter)?),
+            _ => Model::Nu205(Bearing::new(params).map_err(KernelError::Parameter)?),
+        };
         Ok(Kernel {
-            geometry,
-            cage_ratio: 0.5 * (1.0 - gamma),
+            model,
+            film,
             period_s: (1.0 / sample_rate_hz) as f32,
-            pitch_sin_cos: libm::sincosf(TAU / geometry.rollers as f32),
             cage_angle_rad: 0.0,
             first: true,
         })
     }
 
-    /// The bearing this kernel steps.
-    pub fn geometry(&self) -> &BearingGeometry {
-        &self.geometry
+    /// Number of rollers.
+    pub fn rollers(&self) -> usize {
+        match &self.model {
+            Model::HubMotor(_) => 17,
+            Model::Nu205(_) => 12,
+        }
+    }
+
+    /// The film model.
+    pub fn film(&self) -> FilmKind {
+        self.film
+    }
+
+    /// The operating state of `sample` at the current cage angle.
+    fn state(&self, sample: &Sample) -> OperatingState {
+        OperatingState {
+            displacement_m: [sample.x_m, sample.y_m],
+            velocity_m_s: [sample.vx_m_s, sample.vy_m_s],
+            tilt_rad: sample.tilt_rad.unwrap_or([0.0; 2]),
+            shaft_speed_rad_s: sample.speed_rad_s,
+            cage_angle_rad: self.cage_angle_rad,
+        }
+    }
+
+    /// Converges the warm start at the first sample ([`PRIME_STEPS`] untimed steps), so that
+    /// the timed steps all do the same work. The cage angle is not advanced.
+    pub fn prime(&mut self, sample: &Sample) {
+        let state = self.state(sample);
+        for _ in 0..PRIME_STEPS {
+            match (&mut self.model, self.film) {
+                (Model::HubMotor(b), FilmKind::Dry) => {
+                    b.step_dry(&state);
+                }
+                (Model::HubMotor(b), _) => {
+                    b.step(&Regression, &state);
+                }
+                (Model::Nu205(b), FilmKind::Dry) => {
+                    b.step_dry(&state);
+                }
+                (Model::Nu205(b), _) => {
+                    b.step(&Regression, &state);
+                }
+            }
+        }
     }
 
     /// Advances to `sample` and writes the outputs.
     pub fn step(&mut self, sample: &Sample, out: &mut StepOutputs) -> Result<(), KernelFault> {
-        let values = [
-            sample.speed_rad_s,
-            sample.x_m,
-            sample.y_m,
-            sample.vx_m_s,
-            sample.vy_m_s,
-        ];
-        if !values.iter().all(|v| v.is_finite()) {
-            return Err(KernelFault::NonFiniteSample);
-        }
         if self.first {
             self.first = false;
         } else {
+            // Cage speed (ω/2)(1 − D/d_m), PHYSICS.md §2, over one nominal period.
+            let geometry = match &self.model {
+                Model::HubMotor(b) => *b.params().geometry(),
+                Model::Nu205(b) => *b.params().geometry(),
+            };
             let advanced =
-                self.cage_angle_rad + self.cage_ratio * sample.speed_rad_s * self.period_s;
-            // Wrap into [0, 2π) so that f32 keeps its resolution on long traces.
-            self.cage_angle_rad = advanced - TAU * libm::floorf(advanced / TAU);
+                self.cage_angle_rad + geometry.cage_speed_rad_s(sample.speed_rad_s) * self.period_s;
+            // Whole turns by truncation (one instruction): exact wrap into [0, 2π) for the
+            // non-negative angles of forward rotation, bounded in (−2π, 2π) otherwise.
+            let turns = (advanced * INV_TAU) as i32;
+            self.cage_angle_rad = advanced - turns as f32 * TAU;
         }
-        let (pitch_sin, pitch_cos) = self.pitch_sin_cos;
-        let (mut sin, mut cos) = libm::sincosf(self.cage_angle_rad);
-        let rollers = if self.geometry.rollers > MAX_ROLLERS {
-            MAX_ROLLERS
-        } else {
-            self.geometry.rollers
-        };
-        *out = StepOutputs {
-            cage_angle_rad: self.cage_angle_rad,
-            rollers,
-            ..StepOutputs::default()
-        };
-        for approach in out.roller_approach_m.iter_mut().take(rollers) {
-            *approach = sample.x_m * cos + sample.y_m * sin - self.geometry.clearance_m;
-            // Next roller: rotate by 2π/Z (angle addition).
-            let next_sin = sin * pitch_cos + cos * pitch_sin;
-            cos = cos * pitch_cos - sin * pitch_sin;
-            sin = next_sin;
+        let state = self.state(sample);
+        let film = self.film;
+        out.cage_angle_rad = self.cage_angle_rad;
+        match &mut self.model {
+            Model::HubMotor(b) => copy_output(run(b, film, &state), out),
+            Model::Nu205(b) => copy_output(run(b, film, &state), out),
         }
-        Ok(())
     }
 }
 
+/// One core step with the chosen film model.
+fn run<'a, const Z: usize>(
+    bearing: &'a mut Bearing<Z, SLICES>,
+    film: FilmKind,
+    state: &OperatingState,
+) -> &'a BearingOutput<Z> {
+    match film {
+        FilmKind::Dry => bearing.step_dry(state),
+        // `Kernel::new` refuses the networks until the core has them.
+        _ => bearing.step(&Regression, state),
+    }
+}
+
+/// Copies the core's output into the harness's fixed-size record.
+fn copy_output<const Z: usize>(
+    result: &BearingOutput<Z>,
+    out: &mut StepOutputs,
+) -> Result<(), KernelFault> {
+    if let StepStatus::Rejected(error) = result.status {
+        return Err(KernelFault::Rejected(error));
+    }
+    out.force_n = result.force_n;
+    out.rollers = if Z > MAX_ROLLERS { MAX_ROLLERS } else { Z };
+    for (j, roller) in result.rollers.iter().enumerate().take(MAX_ROLLERS) {
+        out.roller_load_n[j] = roller.load_n;
+        out.film_inner_m[j] = roller.central_film_in_m;
+        out.film_outer_m[j] = roller.central_film_out_m;
+        out.roller_approach_m[j] = roller.geometric_approach_m;
+        out.source_inner[j] = roller.film_source_in;
+        out.source_outer[j] = roller.film_source_out;
+    }
+    Ok(())
+}
+
+// The explicit path keeps the test module findable when the firmware includes this file from
+// another crate (rustfmt resolves it there too).
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn sample(x: f32, y: f32, speed: f32) -> Sample {
-        Sample {
-            time_s: 0.0,
-            speed_rad_s: speed,
-            x_m: x,
-            y_m: y,
-            vx_m_s: 0.0,
-            vy_m_s: 0.0,
-            tilt_rad: None,
-        }
-    }
-
-    /// Reference: PHYSICS.md §2 cage speed (ω/2)(1 − D/d_m) integrated over n steps in f64, and
-    /// δ_j = x cos θ_j + y sin θ_j − g_r evaluated directly in f64 at θ_j = θ_c + 2πj/Z.
-    #[test]
-    fn cage_angle_and_approach_follow_the_closed_form() {
-        let rate = 10_000.0;
-        let mut kernel = Kernel::new("hub_motor", rate).unwrap();
-        let (x, y, speed) = (3.0e-6f32, -7.0e-6f32, 2000.0f32);
-        let mut out = StepOutputs::default();
-        let steps = 250;
-        for _ in 0..steps {
-            kernel.step(&sample(x, y, speed), &mut out).unwrap();
-        }
-        let cage = 0.5 * (1.0 - 8.8 / 60.0) * 2000.0 * (steps - 1) as f64 / rate;
-        let cage = cage.rem_euclid(std::f64::consts::TAU);
-        assert!(
-            (f64::from(out.cage_angle_rad) - cage).abs() < 1e-4,
-            "{} vs {cage}",
-            out.cage_angle_rad
-        );
-        assert_eq!(out.rollers, 17);
-        for j in 0..17 {
-            let theta = f64::from(out.cage_angle_rad) + std::f64::consts::TAU * j as f64 / 17.0;
-            let expected = f64::from(x) * theta.cos() + f64::from(y) * theta.sin() + 2.0e-6;
-            // 1e-11 m: f32 rounding of a ≈ 1e-5 m value after 17 rotations.
-            assert!(
-                (f64::from(out.roller_approach_m[j]) - expected).abs() < 1e-11,
-                "roller {j}"
-            );
-        }
-    }
-
-    #[test]
-    fn refuses_unknown_bearings_and_non_finite_samples() {
-        assert_eq!(
-            Kernel::new("nu999", 1e4).unwrap_err(),
-            KernelError::UnknownBearing
-        );
-        assert_eq!(
-            Kernel::new("nu205", f64::NAN).unwrap_err(),
-            KernelError::BadSampleRate
-        );
-        let mut kernel = Kernel::new("nu205", 1e4).unwrap();
-        let mut out = StepOutputs::default();
-        assert_eq!(
-            kernel.step(&sample(f32::NAN, 0.0, 1.0), &mut out),
-            Err(KernelFault::NonFiniteSample)
-        );
-    }
-}
+#[path = "kernel/tests.rs"]
+mod tests;

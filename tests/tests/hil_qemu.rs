@@ -7,6 +7,7 @@
 //! `nop` instructions for the instruction counter; a second run of the same firmware for
 //! determinism; the trace's CRC for the firmware's own input checks.
 
+use bearing_hil::kernel::FilmKind;
 use bearing_hil::qemu::{self, tools, QemuOptions};
 use bearing_hil::trace::synthetic::Whirl;
 use bearing_hil::trace::{binary, TraceMeta, ValidationOptions};
@@ -34,7 +35,7 @@ fn write_trace(path: &Path, count: usize) {
     .trace(
         TraceMeta {
             bearing: "hub_motor".into(),
-            lubricant: "mineral_80mpas".into(),
+            lubricant: "thesis_oil".into(),
             sample_rate_hz: 10_000.0,
         },
         count,
@@ -49,6 +50,7 @@ fn options(trace: &Path, report: &Path) -> QemuOptions {
         report_dir: report.to_path_buf(),
         timeout: Duration::from_secs(300),
         max_instructions: 30_000,
+        film: FilmKind::Regression,
     }
 }
 
@@ -109,6 +111,7 @@ fn firmware_rejects_corrupted_traces_with_its_exit_code() {
     ];
     for (bytes, expected) in cases {
         std::fs::write(dir.path().join("trace.bin"), &bytes).unwrap();
+        std::fs::write(dir.path().join("film.txt"), "regression").unwrap();
         let (code, _log) = qemu::run_qemu(&elf, dir.path(), Duration::from_secs(60)).unwrap();
         assert_eq!(
             code,

@@ -63,6 +63,8 @@ enum Failure {
     CounterDead = 9,
     /// The core peripherals were already taken.
     Peripherals = 10,
+    /// `film.txt` is missing or names no film model.
+    FilmChoice = 11,
 }
 
 #[entry]
@@ -109,9 +111,20 @@ fn run(painted_top: usize) -> Result<(), Failure> {
         header.count,
         header.sample_rate_hz
     );
-    let mut kernel =
-        kernel::Kernel::new(bearing, header.sample_rate_hz).map_err(|_| Failure::Kernel)?;
-    let rollers = kernel.geometry().rollers;
+    let film = read_film_choice()?;
+    defmt::info!(
+        "FPSCR = {=u32:#x}",
+        cortex_m::register::fpscr::read().bits()
+    );
+    let mut kernel = kernel::Kernel::new(
+        bearing,
+        wire::identifier_str(&header.lubricant_id),
+        header.sample_rate_hz,
+        film,
+    )
+    .map_err(|_| Failure::Kernel)?;
+    defmt::info!("film model: {=str}", film.name());
+    let rollers = kernel.rollers();
 
     let mut output =
         HostFile::open(b"outputs.bin\0", open::W_TRUNC_BINARY).map_err(|_| Failure::OutputIo)?;
@@ -135,13 +148,22 @@ fn run(painted_top: usize) -> Result<(), Failure> {
         payload.feed(bytes);
         let sample =
             wire::decode_record(bytes, header.has_tilt).map_err(|_| Failure::TraceLength)?;
+        if index == 0 {
+            // Converge the warm start before the first timed step, as the host replay does.
+            kernel.prime(&sample);
+        }
 
         let start = counter::now();
         let result = kernel.step(black_box(&sample), black_box(&mut out));
         let end = counter::now();
         let counts = counter::elapsed(start, end);
         if let Err(fault) = result {
-            defmt::error!("step {=u32} failed: {}", index, fault as u32);
+            let kernel::KernelFault::Rejected(error) = fault;
+            defmt::error!(
+                "step {=u32} refused by the core: field {=str}",
+                index,
+                error.field
+            );
             return Err(Failure::Step);
         }
         if counts.instructions == 0 || counts.systick == 0 {
@@ -179,6 +201,17 @@ fn run(painted_top: usize) -> Result<(), Failure> {
         .write_all(&trailer.encode())
         .map_err(|_| Failure::OutputIo)?;
     Ok(())
+}
+
+/// Reads the film model's name from `film.txt` (written by `hil-sim qemu`).
+fn read_film_choice() -> Result<kernel::FilmKind, Failure> {
+    let mut file =
+        HostFile::open(b"film.txt\0", open::R_BINARY).map_err(|_| Failure::FilmChoice)?;
+    let len = file.len().map_err(|_| Failure::FilmChoice)?;
+    let mut name = [0u8; 16];
+    let bytes = name.get_mut(..len).ok_or(Failure::FilmChoice)?;
+    file.read_exact(bytes).map_err(|_| Failure::FilmChoice)?;
+    kernel::FilmKind::from_name(bytes).ok_or(Failure::FilmChoice)
 }
 
 #[panic_handler]

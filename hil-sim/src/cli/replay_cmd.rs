@@ -64,7 +64,11 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
             "--budget-us = {budget_us} exceeds the period 1/--rate-hz = {period_us:.3} µs: such a budget cannot be met in real time"
         );
     }
-    let mut product = wiring::product(&trace.meta, args.film).map_err(|e| anyhow!(e))?;
+    let first = trace
+        .samples
+        .first()
+        .ok_or_else(|| anyhow!("the trace has no samples"))?;
+    let mut product = wiring::product(&trace.meta, args.film, first).map_err(|e| anyhow!(e))?;
     let config = ReplayConfig {
         rate_hz,
         reference_every: args.reference_every,

@@ -65,7 +65,7 @@ pub struct SynthArgs {
     #[arg(long, default_value = "hub_motor")]
     pub bearing: String,
     /// Lubricant identifier.
-    #[arg(long, default_value = "mineral_80mpas")]
+    #[arg(long, default_value = "thesis_oil")]
     pub lubricant: String,
     /// Sample rate (Hz).
     #[arg(long, default_value_t = 10_000.0, allow_negative_numbers = true)]

@@ -4,7 +4,7 @@
 //! neither Rust nor LLVM contracts `a * b + c` into a fused multiply-add without being asked, so
 //! every f32 output must be bit-identical: the comparison is on the bit patterns, no tolerance.
 
-use crate::kernel::Kernel;
+use crate::kernel::{FilmKind, Kernel};
 use crate::outputs::{
     decode_step, record_len, StepCounts, StepOutputs, Trailer, OUTPUT_HEADER_LEN, OUTPUT_MAGIC,
     OUTPUT_VERSION, TRAILER_LEN,
@@ -69,10 +69,24 @@ pub fn parse_outputs(bytes: &[u8], expected_steps: usize) -> Result<FirmwareRun,
     })
 }
 
-/// The host replay of the trace through the same kernel.
-pub fn host_outputs(trace: &Trace) -> Result<Vec<StepOutputs>, String> {
-    let mut kernel = Kernel::new(&trace.meta.bearing, trace.meta.sample_rate_hz)
-        .map_err(|e| format!("the kernel refuses the trace: {e:?}"))?;
+/// The host replay of the trace through the same kernel, primed at the first sample as the
+/// firmware does.
+pub fn host_outputs(trace: &Trace, film: FilmKind) -> Result<Vec<StepOutputs>, String> {
+    let mut kernel = Kernel::new(
+        &trace.meta.bearing,
+        &trace.meta.lubricant,
+        trace.meta.sample_rate_hz,
+        film,
+    )
+    .map_err(|e| {
+        format!(
+            "the kernel refuses the trace: {}",
+            crate::wiring::describe(&e)
+        )
+    })?;
+    if let Some(first) = trace.samples.first() {
+        kernel.prime(first);
+    }
     let mut outputs = vec![StepOutputs::default(); trace.samples.len()];
     for (index, (sample, out)) in trace.samples.iter().zip(outputs.iter_mut()).enumerate() {
         kernel
@@ -134,10 +148,19 @@ fn first_difference(host: &StepOutputs, firmware: &StepOutputs) -> Option<String
             return Some(format!("roller {j} film source differs"));
         }
     }
-    fields
+    let differing: Vec<String> = fields
         .into_iter()
-        .find(|(_, h, f)| h.to_bits() != f.to_bits())
+        .filter(|(_, h, f)| h.to_bits() != f.to_bits())
         .map(|(name, h, f)| format!("{name}: host {h:e}, firmware {f:e}"))
+        .collect();
+    match differing.len() {
+        0 => None,
+        n if n <= 6 => Some(differing.join("; ")),
+        n => Some(format!(
+            "{}; … ({n} fields differ)",
+            differing[..6].join("; ")
+        )),
+    }
 }
 
 /// Compares every step, bit for bit.

@@ -11,6 +11,7 @@ pub mod compare;
 pub mod elf;
 pub mod tools;
 
+use crate::kernel::FilmKind;
 use crate::trace::{binary, Trace, ValidationOptions};
 use serde::Serialize;
 use std::io::Read;
@@ -29,6 +30,8 @@ pub struct QemuOptions {
     pub timeout: Duration,
     /// Largest acceptable instruction count per step (issue 6: 30 000 ≈ 5 kHz at 168 MHz).
     pub max_instructions: u32,
+    /// Film model of the step (written to `film.txt` for the firmware).
+    pub film: FilmKind,
 }
 
 /// Minimum, median and maximum of a per-step count.
@@ -94,6 +97,8 @@ pub struct QemuReport {
     pub qemu_wall_s: f64,
     /// The firmware ELF.
     pub firmware: PathBuf,
+    /// Film model stepped.
+    pub film: &'static str,
     /// The decoded defmt log, when `defmt-print` is installed.
     pub log: Option<Vec<String>>,
     /// Why the run failed its checks (empty when it passed).
@@ -120,12 +125,13 @@ pub fn describe_exit(code: i32) -> &'static str {
         8 => "the firmware cannot write outputs.bin",
         9 => "SysTick or TIM2 counted nothing (is -icount missing?)",
         10 => "the core peripherals were unavailable",
+        11 => "film.txt is missing or names no film model",
         101 => "the firmware panicked",
         _ => "unknown firmware exit code",
     }
 }
 
-/// Runs QEMU on `elf` in `dir` (which must hold `trace.bin`), killing it after `timeout`;
+/// Runs QEMU on `elf` in `dir` (which must hold `trace.bin` and `film.txt`), killing it after `timeout`;
 /// returns the exit code (`None` when killed by a signal) and QEMU's stdout (the defmt log).
 pub fn run_qemu(
     elf: &Path,
@@ -214,7 +220,7 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
     tools::check_target()?;
     let trace = Trace::read(&options.trace, &ValidationOptions::default())
         .map_err(|e| format!("reading trace {}: {e}", options.trace.display()))?;
-    let host = compare::host_outputs(&trace)?;
+    let host = compare::host_outputs(&trace, options.film)?;
 
     let elf = tools::build_firmware(&tools::firmware_dir())?;
     let image = std::fs::read(&elf).map_err(|e| format!("reading {}: {e}", elf.display()))?;
@@ -225,6 +231,8 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
     let bytes = binary::encode(&trace).map_err(|e| e.to_string())?;
     std::fs::write(dir.join("trace.bin"), bytes).map_err(|e| format!("writing trace.bin: {e}"))?;
+    std::fs::write(dir.join("film.txt"), options.film.name())
+        .map_err(|e| format!("writing film.txt: {e}"))?;
     let _ = std::fs::remove_file(dir.join("outputs.bin"));
 
     let started = Instant::now();
@@ -317,6 +325,7 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
         comparison,
         qemu_wall_s,
         firmware: elf,
+        film: options.film.name(),
         log: decoded,
         reasons,
     };
