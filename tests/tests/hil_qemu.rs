@@ -76,6 +76,20 @@ fn firmware_replay_matches_the_host_bit_for_bit_and_counts_deterministically() {
     assert!(first.stack_bytes > 0 && u64::from(first.stack_bytes) + first.ram_bytes < 128 * 1024);
     assert!(first.loop_stack_bytes > 0 && first.loop_stack_bytes < first.stack_bytes);
 
+    // The profile's single regression step (another state, measured separately) costs what
+    // the replayed steps cost, within 5 %: two measurements of the same code agree.
+    let profiled = first
+        .profile
+        .iter()
+        .find(|e| e.item.starts_with("Bearing::step regression"))
+        .map(|e| f64::from(e.instructions))
+        .unwrap();
+    let replayed = f64::from(first.instructions_per_step.median);
+    assert!(
+        (profiled / replayed - 1.0).abs() < 0.05,
+        "{profiled} vs {replayed}"
+    );
+
     // Same firmware, same trace: the same instruction count for every step.
     let second = qemu::run(&options(&trace, &dir.path().join("b"))).unwrap();
     let counts =

@@ -31,6 +31,7 @@ mod wire;
 
 mod counter;
 mod host_io;
+mod profile;
 mod stack;
 
 use core::hint::black_box;
@@ -112,10 +113,6 @@ fn run(painted_top: usize) -> Result<(), Failure> {
         header.sample_rate_hz
     );
     let film = read_film_choice()?;
-    defmt::info!(
-        "FPSCR = {=u32:#x}",
-        cortex_m::register::fpscr::read().bits()
-    );
     let mut kernel = kernel::Kernel::new(
         bearing,
         wire::identifier_str(&header.lubricant_id),
@@ -200,6 +197,8 @@ fn run(painted_top: usize) -> Result<(), Failure> {
     output
         .write_all(&trailer.encode())
         .map_err(|_| Failure::OutputIo)?;
+    // After the replay and its stack measurement, so that neither sees the profiling.
+    profile::write_profile().map_err(|_| Failure::OutputIo)?;
     Ok(())
 }
 

@@ -20,7 +20,7 @@ pub struct QemuArgs {
     #[arg(long, default_value = "reports/qemu")]
     pub report: PathBuf,
     /// Kill QEMU after this many seconds.
-    #[arg(long, default_value_t = 300.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 300.0, allow_hyphen_values = true)]
     pub timeout_s: f64,
     /// Largest acceptable instruction count per step.
     #[arg(long, default_value_t = 30_000)]
@@ -87,6 +87,12 @@ pub fn run(args: &QemuArgs) -> Result<ExitCode> {
             "outputs match host     {} ({} steps compared bit for bit)",
             report.outputs_match, report.comparison.steps
         );
+        if !report.profile.is_empty() {
+            println!("where a step goes (instructions, one call each on hub-motor values):");
+            for entry in &report.profile {
+                println!("  {:>8}  {}", entry.instructions, entry.item);
+            }
+        }
         println!("report written to {}", args.report.display());
     }
     if report.passed() {

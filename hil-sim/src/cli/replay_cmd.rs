@@ -20,10 +20,10 @@ pub struct ReplayArgs {
     #[arg(long)]
     pub trace: Option<PathBuf>,
     /// Step rate (Hz) for pacing and the budget; default: the trace's sample rate.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub rate_hz: Option<f64>,
     /// Step-time budget for the 99.9th percentile (µs).
-    #[arg(long, default_value_t = Limits::default().budget_us, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = Limits::default().budget_us, allow_hyphen_values = true)]
     pub budget_us: f64,
     /// Film model of the bearing step.
     #[arg(long, value_enum, default_value_t = FilmChoice::Int)]

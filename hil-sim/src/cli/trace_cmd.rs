@@ -31,7 +31,7 @@ pub enum TraceCommand {
 #[derive(Args)]
 pub struct CheckArgs {
     /// Largest allowed relative deviation of a time step from 1/rate.
-    #[arg(long, default_value_t = ValidationOptions::default().gap_tolerance, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = ValidationOptions::default().gap_tolerance, allow_hyphen_values = true)]
     pub gap_tolerance: f64,
 }
 
@@ -68,28 +68,28 @@ pub struct SynthArgs {
     #[arg(long, default_value = "thesis_oil")]
     pub lubricant: String,
     /// Sample rate (Hz).
-    #[arg(long, default_value_t = 10_000.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 10_000.0, allow_hyphen_values = true)]
     pub rate_hz: f64,
     /// Number of samples.
     #[arg(long, default_value_t = 1000)]
     pub count: usize,
     /// Shaft speed (rpm).
-    #[arg(long, default_value_t = 12_000.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 12_000.0, allow_hyphen_values = true)]
     pub speed_rpm: f64,
     /// Static displacement of the orbit centre in x (m).
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub offset_x_m: f64,
     /// Static displacement of the orbit centre in y (m).
-    #[arg(long, default_value_t = -5.0e-6, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = -5.0e-6, allow_hyphen_values = true)]
     pub offset_y_m: f64,
     /// Orbit radius (m).
-    #[arg(long, default_value_t = 1.0e-6, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 1.0e-6, allow_hyphen_values = true)]
     pub radius_m: f64,
     /// Whirl frequency (Hz).
-    #[arg(long, default_value_t = 200.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 200.0, allow_hyphen_values = true)]
     pub whirl_hz: f64,
     /// Tilt amplitude about x and y (rad); omit for a trace without tilt.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub tilt_rad: Option<f64>,
 }
 

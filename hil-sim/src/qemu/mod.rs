@@ -66,6 +66,29 @@ pub struct Calibration {
     pub systick: u32,
 }
 
+/// Instructions of one building block of the step.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct ProfileEntry {
+    /// What was measured.
+    pub item: String,
+    /// Its instructions.
+    pub instructions: u32,
+}
+
+/// Parses the firmware's `profile.csv` (`item,instructions` lines after a header).
+pub fn parse_profile(text: &str) -> Vec<ProfileEntry> {
+    text.lines()
+        .skip(1)
+        .filter_map(|line| {
+            let (item, count) = line.rsplit_once(',')?;
+            Some(ProfileEntry {
+                item: item.to_string(),
+                instructions: count.trim().parse().ok()?,
+            })
+        })
+        .collect()
+}
+
 /// The report of an emulated replay (issue 6 §4 keys first).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct QemuReport {
@@ -99,6 +122,9 @@ pub struct QemuReport {
     pub firmware: PathBuf,
     /// Film model stepped.
     pub film: &'static str,
+    /// Instructions of the core's building blocks, each called once on typical hub-motor
+    /// values (`profile.csv` of the firmware): what a step is made of.
+    pub profile: Vec<ProfileEntry>,
     /// The decoded defmt log, when `defmt-print` is installed.
     pub log: Option<Vec<String>>,
     /// Why the run failed its checks (empty when it passed).
@@ -234,6 +260,7 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
     std::fs::write(dir.join("film.txt"), options.film.name())
         .map_err(|e| format!("writing film.txt: {e}"))?;
     let _ = std::fs::remove_file(dir.join("outputs.bin"));
+    let _ = std::fs::remove_file(dir.join("profile.csv"));
 
     let started = Instant::now();
     let (code, log) = run_qemu(&elf, dir, options.timeout)?;
@@ -326,6 +353,9 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
         qemu_wall_s,
         firmware: elf,
         film: options.film.name(),
+        profile: std::fs::read_to_string(dir.join("profile.csv"))
+            .map(|text| parse_profile(&text))
+            .unwrap_or_default(),
         log: decoded,
         reasons,
     };
