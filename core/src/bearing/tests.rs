@@ -289,7 +289,7 @@ proptest! {
 fn rejected_state_names_the_field_and_keeps_the_warm_start() {
     let mut b = Bearing::<17, 10>::new(hub_params(-2e-6, Crown::None)).unwrap();
     b.step(&Regression, &state(0.0, -5e-6, 10_000.0));
-    let warm = b.warm_approach_m;
+    let warm = b.memory;
     let bad = OperatingState {
         shaft_speed_rad_s: f32::NAN,
         ..state(0.0, -5e-6, 10_000.0)
@@ -300,7 +300,7 @@ fn rejected_state_names_the_field_and_keeps_the_warm_start() {
         StepStatus::Ok => panic!("NaN speed accepted"),
     }
     assert_eq!(out.force_n, [0.0, 0.0]);
-    assert_eq!(b.warm_approach_m, warm);
+    assert_eq!(b.memory, warm);
 }
 
 #[test]

@@ -6,6 +6,7 @@
 //! (on both contacts, hence 2P). Only slices with δ_k > 0 carry load.
 
 use super::law::{BoundLaw, ContactLaw};
+use crate::math::max;
 use crate::params::BearingGeometry;
 
 /// Load state of one roller, with the slice sums the stiffness matrix needs.
@@ -97,7 +98,7 @@ impl<const S: usize> SlicedRoller<S> {
             .positions_m
             .iter()
             .zip(self.crown_offsets_m.iter())
-            .fold(f32::MIN, |m, (&x, &c)| m.max(x * tilt_rad + c));
+            .fold(f32::MIN, |m, (&x, &c)| max(x * tilt_rad + c, m));
         if S == 0 {
             0.0
         } else {

@@ -42,8 +42,8 @@ impl Regime {
         let ei = 0.963_556 - 0.2 * ln_m; // ln 2.621
         let rp = 0.252_313_9 + (2.0 / 3.0) * ln_l; // ln 1.287
         let ep = 0.270_790_2 - 0.125 * ln_m + 0.75 * ln_l; // ln 1.311
-        let iso = ri.max(ei);
-        let piezo = rp.min(ep);
+        let iso = crate::math::max(ri, ei);
+        let piezo = crate::math::min(rp, ep);
         if !(ln_m.is_finite() && ln_l.is_finite()) {
             Regime::Dry
         } else if piezo >= iso {

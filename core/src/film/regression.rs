@@ -54,6 +54,11 @@ impl FilmModel for Regression {
         "regression"
     }
 
+    fn source_for(&self, _contact: &ContactInput) -> FilmSource {
+        // The formula serves every contact; `film` returns zero for an invalid one.
+        FilmSource::Regression
+    }
+
     fn film(&self, contact: &ContactInput) -> Film {
         let g = LnGroups::new(contact);
         let r = contact.reduced_radius_m;
