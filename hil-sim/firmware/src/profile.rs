@@ -40,10 +40,18 @@ pub fn write_profile() -> Result<(), IoError> {
     let contact = params.contact_input(false, 800.0, 2199.0);
     let empty = measure(|| ());
     let x = black_box(2.0f32);
-    let entries: [(&str, u32); 13] = [
+    let entries: [(&str, u32); 15] = [
         (
-            "f32::max (fmaxf call)",
+            "f32::max(2, 1.5) (fmaxf call)",
             measure(|| black_box(x).max(black_box(1.5))),
+        ),
+        (
+            "f32::max(2, 3) (fmaxf call)",
+            measure(|| black_box(x).max(black_box(3.0))),
+        ),
+        (
+            "f32::min(2, 3) (fminf call)",
+            measure(|| black_box(x).min(black_box(3.0))),
         ),
         ("libm::sqrtf(2)", measure(|| libm::sqrtf(black_box(2.0)))),
         (
