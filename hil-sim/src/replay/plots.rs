@@ -175,65 +175,124 @@ pub fn error_along_trace(path: &Path, run: &ReplayRun) -> PlotResult {
     Ok(())
 }
 
-/// Central film at the inner contact of every roller along the trace (µm).
+/// Colour of a value scaled to [0, 1]: dark blue through green to yellow (a viridis-like ramp,
+/// readable in grey scale because its lightness rises monotonically).
+fn ramp(t: f64) -> RGBColor {
+    let t = t.clamp(0.0, 1.0);
+    let stops = [
+        (68.0, 1.0, 84.0),
+        (59.0, 82.0, 139.0),
+        (33.0, 145.0, 140.0),
+        (94.0, 201.0, 98.0),
+        (253.0, 231.0, 37.0),
+    ];
+    let x = t * (stops.len() - 1) as f64;
+    let i = (x as usize).min(stops.len() - 2);
+    let f = x - i as f64;
+    let (a, b) = (stops[i], stops[i + 1]);
+    let mix = |p: f64, q: f64| (p + (q - p) * f).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// Central film at the inner contact of every roller. Top: a map of the first (up to) 400
+/// steps — time across, roller index up, colour the film — where each roller's passage through
+/// the load zone is a diagonal stripe. Bottom: the film against the roller's angular position
+/// over the whole trace (up to 20 000 points), which shows the load zone.
 pub fn film_per_roller(path: &Path, trace: &Trace, run: &ReplayRun) -> PlotResult {
     let rollers = run
         .outputs
         .first()
         .map_or(0, |o| o.rollers)
         .min(super::MAX_ROLLERS);
-    // At most ~4000 points per line keeps the PNG readable and the drawing fast.
-    let stride = (run.outputs.len() / 4000).max(1);
+    let steps = run.outputs.len().min(trace.samples.len());
+    if rollers == 0 || steps == 0 {
+        return Err("no roller outputs".into());
+    }
+    let film_um = |out: &super::StepOutputs, j: usize| f64::from(out.film_inner_m[j]) * 1e6;
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for out in run.outputs.iter().step_by(stride) {
-        for &h in out.film_inner_m.iter().take(rollers) {
-            let um = f64::from(h) * 1e6;
-            if um.is_finite() {
-                lo = lo.min(um);
-                hi = hi.max(um);
+    for out in run.outputs.iter().take(steps) {
+        for j in 0..rollers {
+            let v = film_um(out, j);
+            if v.is_finite() {
+                lo = lo.min(v);
+                hi = hi.max(v);
             }
         }
     }
     if !(lo.is_finite() && hi.is_finite()) {
         return Err("no finite film values".into());
     }
-    let pad = ((hi - lo) * 0.05).max(1e-6);
-    let t0 = trace.samples.first().map_or(0.0, |s| s.time_s);
-    let t1 = trace
-        .samples
-        .last()
-        .map_or(1.0, |s| s.time_s)
-        .max(t0 + 1e-9);
-    let root = BitMapBackend::new(path, SIZE).into_drawing_area();
+    let span = (hi - lo).max(1e-12);
+    let root = BitMapBackend::new(path, (1000, 900)).into_drawing_area();
     root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
+    let (top, bottom) = root.split_vertically(450);
+
+    let window = steps.min(400);
+    let t0 = trace.samples.first().map_or(0.0, |s| s.time_s);
+    let period = 1.0 / trace.meta.sample_rate_hz;
+    let t1 = t0 + window as f64 * period;
+    let mut map = ChartBuilder::on(&top)
         .caption(
-            format!("Central film, inner contact, {rollers} rollers"),
-            ("sans-serif", 22),
+            format!("Central film, inner contact, first {window} steps: {lo:.3} µm (dark) … {hi:.3} µm (yellow)"),
+            ("sans-serif", 20),
         )
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(80)
-        .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))?;
-    chart
-        .configure_mesh()
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d(t0..t1, 0.0..rollers as f64)?;
+    map.configure_mesh()
+        .disable_mesh()
         .x_desc("time (s)")
+        .y_desc("roller")
+        .draw()?;
+    map.draw_series(
+        run.outputs
+            .iter()
+            .take(window)
+            .enumerate()
+            .flat_map(|(i, out)| {
+                let x0 = t0 + i as f64 * period;
+                (0..rollers).map(move |j| {
+                    Rectangle::new(
+                        [(x0, j as f64), (x0 + period, j as f64 + 1.0)],
+                        ramp((film_um(out, j) - lo) / span).filled(),
+                    )
+                })
+            }),
+    )?;
+
+    let pad = 0.05 * span;
+    let mut scatter = ChartBuilder::on(&bottom)
+        .caption(
+            "Central film against roller position, whole trace",
+            ("sans-serif", 20),
+        )
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..360.0, (lo - pad)..(hi + pad))?;
+    scatter
+        .configure_mesh()
+        .x_desc("roller angle from +x (degrees)")
         .y_desc("central film (µm)")
         .draw()?;
-    for j in 0..rollers {
-        let color = Palette99::pick(j).to_rgba();
-        let line = trace
-            .samples
-            .iter()
-            .zip(&run.outputs)
-            .step_by(stride)
-            .filter_map(|(s, o)| {
-                o.film_inner_m
-                    .get(j)
-                    .map(|&h| (s.time_s, f64::from(h) * 1e6))
-            });
-        chart.draw_series(LineSeries::new(line, color.stroke_width(1)))?;
-    }
+    let stride = (steps * rollers / 20_000).max(1);
+    let points = run
+        .outputs
+        .iter()
+        .take(steps)
+        .flat_map(|out| {
+            (0..rollers).map(move |j| {
+                let angle = f64::from(out.cage_angle_rad)
+                    + std::f64::consts::TAU * j as f64 / rollers as f64;
+                (
+                    angle.rem_euclid(std::f64::consts::TAU).to_degrees(),
+                    film_um(out, j),
+                )
+            })
+        })
+        .step_by(stride);
+    scatter.draw_series(points.map(|p| Circle::new(p, 1, BLUE.mix(0.4).filled())))?;
     root.present()?;
     Ok(())
 }
