@@ -56,10 +56,11 @@ fn round_small(x: f32) -> f32 {
     (x + ROUNDER) - ROUNDER
 }
 
-/// 2ⁿ for an integral `n` in [−126, 127], from its bits.
+/// 2ⁿ for an integral `n` in [−126, 127], from its bits. The callers clamp their argument
+/// so that `n` is in range; `as` saturates, and the mask keeps any other value harmless.
 #[inline(always)]
 fn pow2i(n: f32) -> f32 {
-    f32::from_bits((((n as i32) + 127).clamp(1, 254) as u32) << 23)
+    f32::from_bits((((n as i32) + 127) as u32 & 0xff) << 23)
 }
 
 /// Base-2 logarithm for `x > 0` (finite). Inputs `<= 0`, subnormal or NaN are treated as the
@@ -110,12 +111,7 @@ pub fn exp(x: f32) -> f32 {
 /// `x^y` for `x > 0`; `x <= 0` (or NaN) gives `0`. Never returns NaN or ∞.
 #[inline]
 pub fn pow(x: f32, y: f32) -> f32 {
-    let value = exp2(y * log2(x));
-    if x > 0.0 {
-        value
-    } else {
-        0.0
-    }
+    select(x > 0.0, exp2(y * log2(x)), 0.0)
 }
 
 /// `x^(10/9)` for `0 < x ≤ 1` (the Palmgren slice law), at about a third of [`pow`]'s cost:
@@ -139,11 +135,8 @@ pub fn pow_10_9(x: f32) -> f32 {
         y * (8.0 / 9.0) + x / (9.0 * y8)
     };
     let root = newton(newton(newton(guess)));
-    if positive {
-        x * root
-    } else {
-        0.0
-    }
+    // Masked by a multiplication: the root stays in the data flow (see `select`).
+    x * root * if positive { 1.0 } else { 0.0 }
 }
 
 /// Sine and cosine of `x` (rad) at a fixed cost. Accurate to a few ulp for |x| ≲ 10⁴ (wrap
@@ -175,20 +168,25 @@ pub fn sin_cos(x: f32) -> (f32, f32) {
         + r2 * (-0.5
             + r2 * (1.0 / 24.0
                 + r2 * (-1.0 / 720.0 + r2 * (1.0 / 40_320.0 + r2 * (-1.0 / 3_628_800.0)))));
-    match k & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+    // Quadrant k: (sin, cos) = (s, c), (c, −s), (−s, −c), (−c, s), without a branch: swap on
+    // odd k, flip the sign bit of sin when k & 2, of cos when (k + 1) & 2.
+    let odd = k & 1 == 1;
+    let sin = select(odd, c, s);
+    let cos = select(odd, s, c);
+    let flip_sin = ((k & 2) as u32) << 30;
+    let flip_cos = (((k + 1) & 2) as u32) << 30;
+    (
+        f32::from_bits(sin.to_bits() ^ flip_sin),
+        f32::from_bits(cos.to_bits() ^ flip_cos),
+    )
 }
 
 /// Square root of a non-negative number; negative or NaN inputs give 0, +∞ gives `f32::MAX`'s
 /// root.
 #[inline]
 pub fn sqrt(x: f32) -> f32 {
-    let x = if x > 0.0 { min(x, f32::MAX) } else { 0.0 };
-    sqrt_raw(x)
+    // A bit-mask select: with a plain `if` the compiler skips the root when it knows x = 0.
+    sqrt_raw(select(x > 0.0, min(x, f32::MAX), 0.0))
 }
 
 // IEEE square root on a Cortex-M4F: one `vsqrt.f32` in a leaf function. (Rust has no stable
@@ -229,6 +227,16 @@ fn sqrt_raw(x: f32) -> f32 {
 #[inline]
 fn sqrt_raw(x: f32) -> f32 {
     libm::sqrtf(x)
+}
+
+/// `a` if `condition`, else `b`, by bit masks: both sides are always computed and no branch
+/// is taken, so the work does not depend on the data. (A plain `if` on floats lets LLVM turn
+/// the select into a branch that skips the costlier side — a division, `exp`, `ln` — and the
+/// instruction count of a step would then depend on its input.)
+#[inline(always)]
+pub fn select(condition: bool, a: f32, b: f32) -> f32 {
+    let mask = (condition as u32).wrapping_neg();
+    f32::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
 }
 
 /// The larger of `a` and `b`; `b` when `a` is NaN. A compare and a select: no library call

@@ -24,13 +24,13 @@
 //! With a warm start from the previous step this meets |Δh|/h ≤ 10⁻³ (tested against a
 //! converged f64 iteration over the PHYSICS.md §5.3 domain).
 
-use super::film_law::StepFilmLaw;
+use super::film_law::{FilmSum, StepFilmLaw};
 use crate::contact::{RollerLoad, SlicedRoller};
 use crate::film::{ContactInput, Regime};
-use crate::math::{exp, ln, max, min};
+use crate::math::{exp, ln, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step.
-pub const INNER_ITERATIONS: usize = 3;
+pub const INNER_ITERATIONS: usize = 2;
 /// Newton steps of the re-solve after the second slice pass.
 pub const REFINE_ITERATIONS: usize = 2;
 
@@ -71,14 +71,32 @@ pub(crate) struct CoupledRoller {
 /// What a roller carries from one step to the next: the warm start.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct RollerMemory {
-    /// Power law fitted to the slices at the last step (None before the first step).
-    pub law: Option<PowerLaw>,
+    /// Power law fitted to the slices at the last step (meaningless before the first step).
+    pub law: StoredLaw,
     /// ln Q at the last step.
     pub ln_load: f32,
 }
 
+/// A power law that may not exist yet, chosen without a branch.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct StoredLaw {
+    law: PowerLaw,
+    valid: bool,
+}
+
+impl StoredLaw {
+    /// The stored law, or `fallback` before the first step.
+    fn select_or(&self, fallback: &PowerLaw) -> PowerLaw {
+        PowerLaw {
+            offset_m: select(self.valid, self.law.offset_m, fallback.offset_m),
+            ln_coefficient: select(self.valid, self.law.ln_coefficient, fallback.ln_coefficient),
+            exponent: select(self.valid, self.law.exponent, fallback.exponent),
+        }
+    }
+}
+
 /// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct PowerLaw {
     /// δ_off (m).
     offset_m: f32,
@@ -100,40 +118,47 @@ impl PowerLaw {
         approach_m: f32,
         tilt_rad: f32,
     ) -> Self {
+        // Both branches are computed and selected (see `math::select`): fixed work.
         let q = load.load_n;
         let k = load.stiffness_n_per_m;
-        let fit = q > FIT_MIN_N && k > 0.0;
-        let rho1 = if fit { k / q } else { 1.0 };
-        let rho2 = if fit {
-            load.stiffness_derivative_n_per_m2 / k
-        } else {
-            0.0
-        };
-        let curvature_fit = fit && rho1 - rho2 > 0.0;
-        let span = if curvature_fit {
-            1.0 / (rho1 - rho2)
-        } else {
-            (10.0 / 9.0) / rho1
-        };
-        let exponent = if curvature_fit {
-            min(max(span * rho1, 1.0), 4.0)
-        } else {
-            10.0 / 9.0
-        };
-        if fit {
-            Self {
-                offset_m: approach_m - span,
-                ln_coefficient: ln(q) - exponent * ln(span),
-                exponent,
-            }
-        } else {
-            Self {
-                offset_m: roller.touch_approach_tilted_m(tilt_rad),
-                ln_coefficient: ln(roller.nominal_coefficient()),
-                exponent: 10.0 / 9.0,
-            }
+        let fit = (q > FIT_MIN_N) & (k > 0.0);
+        let rho1 = select(fit, k / max(q, FIT_MIN_N), 1.0);
+        let rho2 = select(
+            fit,
+            load.stiffness_derivative_n_per_m2 / max(k, 1.0e-30),
+            0.0,
+        );
+        let curvature_fit = fit & (rho1 - rho2 > 0.0);
+        let span = select(
+            curvature_fit,
+            1.0 / max(rho1 - rho2, 1.0e-30),
+            (10.0 / 9.0) / rho1,
+        );
+        let exponent = select(curvature_fit, min(max(span * rho1, 1.0), 4.0), 10.0 / 9.0);
+        Self {
+            offset_m: select(
+                fit,
+                approach_m - span,
+                roller.touch_approach_tilted_m(tilt_rad),
+            ),
+            ln_coefficient: select(
+                fit,
+                ln(max(q, FIT_MIN_N)) - exponent * ln(span),
+                roller.ln_nominal_coefficient(),
+            ),
+            exponent,
         }
     }
+}
+
+/// Result of a scalar solve: λ = ln Q and the film sum there.
+#[derive(Clone, Copy, Debug)]
+struct Solved {
+    ln_load: f32,
+    /// H at λ (m), extrapolated linearly from the last evaluation.
+    film_m: f32,
+    /// dH/dλ at the last evaluation (m).
+    film_slope_m: f32,
 }
 
 /// Solve δ_off + (Q/L)^(1/n) = δ_geo + H(Q) for λ = ln Q by `iterations` safeguarded Newton
@@ -141,49 +166,52 @@ impl PowerLaw {
 /// the elastic approach still missing. Both sides are close to linear in λ (EHL: ln H ≈ −0.1λ,
 /// hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges in a few steps from
 /// anywhere in the bracket; Φ' > 0 throughout. The dry load (film ≡ 0) bounds the root from
-/// below: the film only adds approach.
+/// below: the film only adds approach. The film sum at the returned λ is the last evaluation
+/// continued by its tangent (second-order accurate, and free).
 fn solve_load(
     law: &PowerLaw,
     films: &StepFilmLaw,
     geometric_approach_m: f32,
     start: f32,
     iterations: usize,
-) -> f32 {
+) -> Solved {
     let gap = geometric_approach_m - law.offset_m;
     let inverse_exponent = 1.0 / law.exponent;
     let ln_dry = law.ln_coefficient + law.exponent * ln(max(gap, 1.0e-30));
-    let mut lo = if gap > 0.0 {
-        max(ln_dry, LN_LOAD_MIN)
-    } else {
-        LN_LOAD_MIN
-    };
+    let mut lo = select(gap > 0.0, max(ln_dry, LN_LOAD_MIN), LN_LOAD_MIN);
     let mut hi = max(LN_LOAD_MAX, lo);
-    let mut lam = if start > lo && start < hi {
+    let mut lam = if (start > lo) & (start < hi) {
         start
     } else {
         lo + 0.5
     };
+    let mut last = (lam, 0.0, 0.0);
     for _ in 0..iterations {
         let elastic = exp(inverse_exponent * (lam - law.ln_coefficient));
         let f = films.sum_at(lam);
         let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
+        last = (lam, f.total_m, dh);
         let missing = elastic - gap;
         let defined = missing > 0.0;
-        let residual = if defined { ln(missing / h) } else { -1.0 };
+        let residual = select(defined, ln(max(missing, 1.0e-30) / h), -1.0);
         let slope = inverse_exponent * elastic / max(missing, 1.0e-30) - dh / h;
-        if residual > 0.0 {
-            hi = lam;
-        } else {
-            lo = lam;
-        }
+        let above = residual > 0.0;
+        // Plain values on both sides: a conditional move, no branch.
+        hi = if above { lam } else { hi };
+        lo = if above { lo } else { lam };
         let newton = lam - residual / slope;
-        lam = if defined && newton >= lo && newton <= hi {
-            newton
-        } else {
-            0.5 * (lo + hi)
-        };
+        lam = select(
+            defined & (newton >= lo) & (newton <= hi),
+            newton,
+            0.5 * (lo + hi),
+        );
     }
-    lam
+    let (at, film_m, film_slope_m) = last;
+    Solved {
+        ln_load: lam,
+        film_m: max(film_m + film_slope_m * (lam - at), 0.0),
+        film_slope_m,
+    }
 }
 
 /// Solve one roller: geometric approach `δ_geo` (m), tilt `ψ` (rad), with its memory of the
@@ -199,64 +227,63 @@ pub(crate) fn solve_roller<const S: usize>(
 ) -> CoupledRoller {
     // 1. Solve with last step's summary of the slices (or, first time, a straight roller's
     //    law from its first touching slice).
-    let law0 = match memory.law {
-        Some(law) => law,
-        None => PowerLaw::fit(roller, &RollerLoad::default(), 0.0, tilt_rad),
-    };
-    let lam1 = solve_load(
+    // (Both computed and selected, so the first step costs what every step costs.)
+    let untouched = PowerLaw::fit(roller, &RollerLoad::default(), 0.0, tilt_rad);
+    let law0 = memory.law.select_or(&untouched);
+    let solved1 = solve_load(
         &law0,
         films,
         geometric_approach_m,
         memory.ln_load,
         INNER_ITERATIONS,
     );
-    let approach1 = geometric_approach_m + films.sum_at(lam1).total_m;
+    let approach1 = geometric_approach_m + solved1.film_m;
 
     // 2. The one slice pass, a fresh power law there and a short re-solve. The law matches the
     //    slices in load, stiffness and curvature at `approach1`, so the remaining error is third
     //    order in the step from `approach1`; load and moment follow the law.
     let r1 = roller.evaluate(approach1, tilt_rad);
     let law1 = PowerLaw::fit(roller, &r1, approach1, tilt_rad);
-    let lam2 = solve_load(
+    let solved2 = solve_load(
         &law1,
         films,
         geometric_approach_m,
         ln(max(r1.load_n, 1.0e-4)),
         REFINE_ITERATIONS,
     );
-    let approach_m = geometric_approach_m + films.sum_at(lam2).total_m;
+    let approach_m = geometric_approach_m + solved2.film_m;
+    let ln_load = solved2.ln_load;
+    let load_n = exp(ln_load);
     let mut load = r1;
-    load.load_n = if approach_m <= law1.offset_m {
-        0.0
-    } else {
-        exp(law1.ln_coefficient + law1.exponent * ln(approach_m - law1.offset_m))
-    };
+    // At the root, Q = e^λ is the law's load at `approach_m`; a roller whose approach stays
+    // short of the law's offset (no film, separated) carries nothing.
+    load.load_n = select(approach_m > law1.offset_m, load_n, 0.0);
     load.moment_nm += load.stiffness_moment_n * (approach_m - approach1);
-    let ln_load = ln(max(load.load_n, 1.0e-4));
     *memory = RollerMemory {
-        law: Some(law1),
+        law: StoredLaw {
+            law: law1,
+            valid: true,
+        },
         ln_load,
     };
 
-    let sum = films.sum_at(ln_load);
+    let sum = FilmSum {
+        total_m: solved2.film_m,
+        slope_m: solved2.film_slope_m,
+        inv_load: 1.0 / load_n,
+    };
     let per_contact = films.contacts_at(ln_load, &sum);
     let regime = |k: usize| {
-        let (offset, l) = (
-            ln_m_offsets.get(k).copied().unwrap_or(0.0),
-            ln_l.get(k).copied().unwrap_or(0.0),
-        );
-        if films.lubricated {
-            Regime::from_ln_moes(ln_load - offset, l)
-        } else {
-            Regime::Dry
-        }
+        let offset = ln_m_offsets.get(k).copied().unwrap_or(0.0);
+        let l = ln_l.get(k).copied().unwrap_or(0.0);
+        Regime::from_ln_moes(ln_load - offset, l)
     };
     CoupledRoller {
         load,
         approach_m,
         ln_load,
         films: per_contact,
-        film_slope_m_per_n: sum.slope_m / max(load.load_n, 1.0e-4),
+        film_slope_m_per_n: sum.slope_m / load_n,
         regimes: [regime(0), regime(1)],
     }
 }

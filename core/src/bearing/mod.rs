@@ -98,6 +98,9 @@ impl BearingParams {
     }
 }
 
+/// Floor of the entrainment speed in the film arithmetic (m/s); see `contact_contexts`.
+const MIN_ENTRAINMENT_M_S: f32 = 1.0e-6;
+
 /// ln Q span of the film nodes before any step has loaded a roller: 10 N … 3 kN.
 const DEFAULT_LOAD_SPAN: (f32, f32) = (core::f32::consts::LN_10, 8.006_368);
 
@@ -184,7 +187,15 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     fn contact_contexts(&self, shaft_speed_rad_s: f32) -> [ContactContext; 2] {
         let p = &self.params;
         let context = |outer: bool| {
-            let template = p.contact_input(outer, 0.0, shaft_speed_rad_s);
+            let mut template = p.contact_input(outer, 0.0, shaft_speed_rad_s);
+            // Computed with a floor of 1 µm/s on the entrainment speed, so a shaft at standstill
+            // runs the same arithmetic, on normal (not subnormal) numbers, as a turning one:
+            // exact zeros and subnormals took a different number of instructions on the
+            // emulated M4. At the floor the films are ≈10⁻¹⁰ m and a roller 1 µm clear of its
+            // races still carries ≈0.03 N of hydrodynamic load; the step reports zero films,
+            // dry regimes and no film source at standstill.
+            template.entrainment_speed_m_s =
+                crate::math::max(template.entrainment_speed_m_s, MIN_ENTRAINMENT_M_S);
             let er = template.reduced_modulus_pa * template.reduced_radius_m;
             let speed = template.viscosity_pa_s * template.entrainment_speed_m_s;
             let ln_2u = core::f32::consts::LN_2 + ln(speed) - ln(er);
@@ -212,13 +223,16 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             return self.reject(e);
         }
         let [inner, outer] = self.contact_contexts(state.shaft_speed_rad_s);
-        let lubricated = inner.template.entrainment_speed_m_s > 0.0;
+        let lubricated = self
+            .params
+            .geometry
+            .entrainment_speed_m_s(state.shaft_speed_rad_s)
+            > 0.0;
         let templates = [inner.template, outer.template];
         let films = StepFilmLaw::new(
             film,
             templates,
             [inner.martin, outer.martin],
-            lubricated,
             self.load_span,
         );
         let ln_m_offsets = [inner.ln_m_offset, outer.ln_m_offset];
@@ -238,24 +252,32 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             if let Some(m) = bearing.memory.get_mut(j) {
                 *m = memory;
             }
-            if r.load.load_n >= 1.0 {
-                span = (
-                    crate::math::min(span.0, r.ln_load),
-                    crate::math::max(span.1, r.ln_load),
-                );
-            }
+            let loaded = r.load.load_n >= 1.0;
+            span = (
+                crate::math::select(loaded, crate::math::min(span.0, r.ln_load), span.0),
+                crate::math::select(loaded, crate::math::max(span.1, r.ln_load), span.1),
+            );
             let [(central_in, min_in), (central_out, min_out)] = r.films;
             let s0 = r.load.stiffness_n_per_m;
             let coupling = r.film_slope_m_per_n / (1.0 - s0 * r.film_slope_m_per_n);
+            let shown = |h: f32| crate::math::select(lubricated, h, 0.0);
             let roller = RollerOutput {
                 approach_m: r.approach_m,
-                central_film_in_m: central_in,
-                central_film_out_m: central_out,
-                min_film_in_m: min_in,
-                min_film_out_m: min_out,
+                central_film_in_m: shown(central_in),
+                central_film_out_m: shown(central_out),
+                min_film_in_m: shown(min_in),
+                min_film_out_m: shown(min_out),
                 roller_stiffness_n_per_m: s0 / (1.0 - s0 * r.film_slope_m_per_n),
-                regime_in: r.regimes[0],
-                regime_out: r.regimes[1],
+                regime_in: if lubricated {
+                    r.regimes[0]
+                } else {
+                    Regime::Dry
+                },
+                regime_out: if lubricated {
+                    r.regimes[1]
+                } else {
+                    Regime::Dry
+                },
                 film_source_in: source_at(film, &templates[0], r.load.load_n, lubricated),
                 film_source_out: source_at(film, &templates[1], r.load.load_n, lubricated),
                 ..RollerOutput::ZERO

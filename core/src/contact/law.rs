@@ -87,11 +87,14 @@ impl BoundLaw {
     pub(crate) fn load_per_length(&self, approach_m: f32) -> (f32, f32, f32) {
         let positive = approach_m > 0.0;
         // Approaches beyond 1 cm are not elastic contact any more; the clamp keeps ∞ finite.
+        // Cheap operands: a conditional move. The results below are masked by multiplying
+        // with 0 or 1, which keeps them in the data flow (no branch can skip the power).
         let d = if positive {
             min(approach_m, MAX_APPROACH_M)
         } else {
             1.0e-12
         };
+        let mask = if positive { 1.0 } else { 0.0 };
         let (w, dw, d2w) = match self.law {
             ContactLaw::Palmgren => {
                 let w = self.palmgren_coefficient * pow_10_9(d);
@@ -100,11 +103,7 @@ impl BoundLaw {
             }
             ContactLaw::Lundberg => self.lundberg(d),
         };
-        if positive {
-            (w, dw, d2w)
-        } else {
-            (0.0, 0.0, 0.0)
-        }
+        (w * mask, dw * mask, d2w * mask)
     }
 
     /// Invert δ = (4w/(πE'))·[ln(A/w) − 1], A = 2πE'√(R_in R_out), for w by Newton in v = ln w.

@@ -37,6 +37,8 @@ pub struct SlicedRoller<const S: usize> {
     crown_offsets_m: [f32; S],
     /// Approach at the roller middle where the first slice touches without tilt (m, ≥ 0).
     touch_approach_m: f32,
+    /// ln of [`SlicedRoller::nominal_coefficient`].
+    ln_nominal_coefficient: f32,
 }
 
 impl<const S: usize> SlicedRoller<S> {
@@ -66,12 +68,14 @@ impl<const S: usize> SlicedRoller<S> {
             *c = -2.0 * geometry.crown_drop_m(*x);
             touch = touch.min(-*c);
         }
+        let nominal = bound.palmgren_coefficient() * slice_length_m * S as f32;
         Self {
             law: bound,
             slice_length_m,
             positions_m,
             crown_offsets_m,
             touch_approach_m: if S == 0 { 0.0 } else { touch },
+            ln_nominal_coefficient: crate::math::ln(nominal),
         }
     }
 
@@ -104,6 +108,11 @@ impl<const S: usize> SlicedRoller<S> {
         } else {
             -lead
         }
+    }
+
+    /// ln of the nominal coefficient (precomputed).
+    pub fn ln_nominal_coefficient(&self) -> f32 {
+        self.ln_nominal_coefficient
     }
 
     /// Load, moment and stiffness for approach `δ` (m) at the roller middle and tilt `ψ` (rad).
