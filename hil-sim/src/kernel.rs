@@ -148,8 +148,9 @@ pub struct Kernel {
     period_s: f32,
     /// Cage angle θ_c in [0, 2π) (rad).
     cage_angle_rad: f32,
-    /// No step taken yet (the first sample defines θ_c = 0).
-    first: bool,
+    /// 0 before the first step (the first sample defines θ_c = 0), 1 after: the cage advance
+    /// is multiplied by it rather than skipped, so that every step runs the same instructions.
+    advance_scale: f32,
 }
 
 impl Kernel {
@@ -177,7 +178,7 @@ impl Kernel {
             film,
             period_s: (1.0 / sample_rate_hz) as f32,
             cage_angle_rad: 0.0,
-            first: true,
+            advance_scale: 0.0,
         })
     }
 
@@ -229,21 +230,26 @@ impl Kernel {
 
     /// Advances to `sample` and writes the outputs.
     pub fn step(&mut self, sample: &Sample, out: &mut StepOutputs) -> Result<(), KernelFault> {
-        if self.first {
-            self.first = false;
+        // Cage speed (ω/2)(1 − D/d_m), PHYSICS.md §2, over one nominal period (none before the
+        // first sample).
+        let geometry = match &self.model {
+            Model::HubMotor(b) => *b.params().geometry(),
+            Model::Nu205(b) => *b.params().geometry(),
+        };
+        let advance = geometry.cage_speed_rad_s(sample.speed_rad_s) * self.period_s;
+        let advanced = self.cage_angle_rad + advance * self.advance_scale;
+        // A non-finite speed (refused by the core below) must not poison the cage angle of the
+        // following samples.
+        let advanced = if advanced.is_finite() {
+            advanced
         } else {
-            // Cage speed (ω/2)(1 − D/d_m), PHYSICS.md §2, over one nominal period.
-            let geometry = match &self.model {
-                Model::HubMotor(b) => *b.params().geometry(),
-                Model::Nu205(b) => *b.params().geometry(),
-            };
-            let advanced =
-                self.cage_angle_rad + geometry.cage_speed_rad_s(sample.speed_rad_s) * self.period_s;
-            // Whole turns by truncation (one instruction): exact wrap into [0, 2π) for the
-            // non-negative angles of forward rotation, bounded in (−2π, 2π) otherwise.
-            let turns = (advanced * INV_TAU) as i32;
-            self.cage_angle_rad = advanced - turns as f32 * TAU;
-        }
+            self.cage_angle_rad
+        };
+        self.advance_scale = 1.0;
+        // Whole turns by truncation (one instruction): exact wrap into [0, 2π) for the
+        // non-negative angles of forward rotation, bounded in (−2π, 2π) otherwise.
+        let turns = (advanced * INV_TAU) as i32;
+        self.cage_angle_rad = advanced - turns as f32 * TAU;
         let state = self.state(sample);
         let film = self.film;
         out.cage_angle_rad = self.cage_angle_rad;

@@ -120,6 +120,14 @@ fn refuses_what_it_cannot_step() {
         Err(KernelFault::Rejected(e)) => assert_eq!(e.field, "displacement_x_m"),
         other => panic!("expected a rejection, got {other:?}"),
     }
+    // A NaN speed is refused and leaves the cage angle usable for the next sample.
+    assert!(kernel
+        .step(&sample(0.0, -5.0e-6, f32::NAN), &mut out)
+        .is_err());
+    kernel
+        .step(&sample(0.0, -5.0e-6, 1000.0), &mut out)
+        .unwrap();
+    assert!(out.cage_angle_rad.is_finite());
     assert_eq!(FilmKind::from_name(b" regression\\n"), None);
     assert_eq!(
         FilmKind::from_name(b" regression\n"),
