@@ -13,6 +13,7 @@ use std::hint::black_box;
 fn kernel_step(c: &mut Criterion) {
     let trace = Whirl {
         speed_rad_s: 2199.0,
+        acceleration_rad_s2: 0.0,
         offset_m: [0.0, -6.0e-6],
         radius_m: 2.0e-6,
         whirl_rad_s: 2.0 * std::f64::consts::PI * 350.0,

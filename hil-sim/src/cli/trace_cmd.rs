@@ -76,6 +76,9 @@ pub struct SynthArgs {
     /// Shaft speed (rpm).
     #[arg(long, default_value_t = 12_000.0, allow_hyphen_values = true)]
     pub speed_rpm: f64,
+    /// Shaft speed at the end of the trace (rpm); default: the start speed (constant speed).
+    #[arg(long, allow_hyphen_values = true)]
+    pub speed_end_rpm: Option<f64>,
     /// Static displacement of the orbit centre in x (m).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub offset_x_m: f64,
@@ -200,8 +203,16 @@ fn synth(args: &SynthArgs) -> Result<()> {
         );
     }
     let speed_rpm = check_range("--speed-rpm", args.speed_rpm, 0.0, 1.0e6)?;
+    let speed_end_rpm = match args.speed_end_rpm {
+        Some(end) => check_range("--speed-end-rpm", end, 0.0, 1.0e6)?,
+        None => speed_rpm,
+    };
+    let duration_s = args.count.saturating_sub(1).max(1) as f64 / rate;
     let whirl = Whirl {
         speed_rad_s: speed_rpm * std::f64::consts::TAU / 60.0,
+        acceleration_rad_s2: (speed_end_rpm - speed_rpm) * std::f64::consts::TAU
+            / 60.0
+            / duration_s,
         offset_m: [
             check_range("--offset-x-m", args.offset_x_m, -1e-3, 1e-3)?,
             check_range("--offset-y-m", args.offset_y_m, -1e-3, 1e-3)?,

@@ -144,6 +144,7 @@ impl AccuracyReference for ClosedFormReference {
 fn trace(count: usize, rate: f64) -> Trace {
     Whirl {
         speed_rad_s: 1500.0,
+        acceleration_rad_s2: 0.0,
         offset_m: [0.0, -6.0e-6],
         radius_m: 1.5e-6,
         whirl_rad_s: 2.0 * std::f64::consts::PI * 120.0,

@@ -6,11 +6,14 @@
 
 use super::{Sample, Trace, TraceMeta};
 
-/// A steady circular whirl plus a static offset, at constant shaft speed.
+/// A steady circular whirl plus a static offset, at a shaft speed that changes linearly
+/// (a run-up when `acceleration_rad_s2 > 0`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Whirl {
-    /// Shaft speed, ω (rad/s).
+    /// Shaft speed at t = 0, ω₀ (rad/s).
     pub speed_rad_s: f64,
+    /// Shaft angular acceleration, ω̇ (rad/s²): ω(t) = ω₀ + ω̇·t.
+    pub acceleration_rad_s2: f64,
     /// Static displacement of the orbit centre (x, y) (m).
     pub offset_m: [f64; 2],
     /// Orbit radius (m).
@@ -34,7 +37,7 @@ impl Whirl {
                 let (sin, cos) = phase.sin_cos();
                 Sample {
                     time_s: t,
-                    speed_rad_s: self.speed_rad_s as f32,
+                    speed_rad_s: (self.speed_rad_s + self.acceleration_rad_s2 * t) as f32,
                     x_m: (self.offset_m[0] + self.radius_m * cos) as f32,
                     y_m: (self.offset_m[1] + self.radius_m * sin) as f32,
                     vx_m_s: (-self.radius_m * self.whirl_rad_s * sin) as f32,

@@ -20,6 +20,7 @@ fn meta() -> TraceMeta {
 fn whirl(tilt: bool, count: usize) -> Trace {
     Whirl {
         speed_rad_s: 2199.1,
+        acceleration_rad_s2: 0.0,
         offset_m: [1.0e-6, -4.0e-6],
         radius_m: 2.5e-6,
         whirl_rad_s: 2.0 * std::f64::consts::PI * 350.0,
