@@ -27,7 +27,9 @@ fn qemu_available() -> bool {
 fn write_trace(path: &Path, count: usize) {
     Whirl {
         speed_rad_s: 1800.0,
-        acceleration_rad_s2: 0.0,
+        // A run-up: 1800 → ≈ 3000 rad/s over 120 samples, so the determinism check covers
+        // a changing speed.
+        acceleration_rad_s2: 1.0e5,
         offset_m: [1.0e-6, -6.0e-6],
         radius_m: 2.0e-6,
         whirl_rad_s: 2.0 * std::f64::consts::PI * 150.0,
