@@ -186,3 +186,82 @@ pub fn compare(host: &[StepOutputs], firmware: &[StepOutputs]) -> Comparison {
     }
     comparison
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::outputs::{encode_output_header, encode_step, FilmSource, OUTPUT_RECORD_MAX};
+
+    fn outputs(rollers: usize, seed: f32) -> StepOutputs {
+        let mut o = StepOutputs {
+            force_n: [seed, -2.0 * seed],
+            cage_angle_rad: 0.25 * seed,
+            rollers,
+            ..StepOutputs::default()
+        };
+        for j in 0..rollers {
+            o.roller_load_n[j] = seed * j as f32;
+            o.film_inner_m[j] = 1.0e-6 * seed;
+            o.film_outer_m[j] = 1.1e-6 * seed;
+            o.roller_approach_m[j] = -1.0e-6 * j as f32;
+            o.source_inner[j] = FilmSource::Regression;
+            o.source_outer[j] = FilmSource::Fallback;
+        }
+        o
+    }
+
+    /// The file layout of `crate::outputs`, written by hand here as the firmware writes it.
+    fn file(steps: &[StepOutputs], rollers: usize) -> Vec<u8> {
+        let mut bytes = encode_output_header(rollers as u16, steps.len() as u32).to_vec();
+        let mut record = [0u8; OUTPUT_RECORD_MAX];
+        for (i, s) in steps.iter().enumerate() {
+            let len = encode_step(1000 + i as u32, 168, s, &mut record);
+            bytes.extend_from_slice(&record[..len]);
+        }
+        let trailer = Trailer {
+            status: 0,
+            stack_bytes: 4096,
+            loop_stack_bytes: 512,
+            calibration_instructions: 1000,
+            calibration_systick: 168,
+        };
+        bytes.extend_from_slice(&trailer.encode());
+        bytes
+    }
+
+    #[test]
+    fn outputs_file_round_trips_and_rejects_damage() {
+        let steps: Vec<StepOutputs> = (1..=5).map(|i| outputs(17, i as f32)).collect();
+        let bytes = file(&steps, 17);
+        let run = parse_outputs(&bytes, 5).unwrap();
+        assert_eq!(run.outputs, steps);
+        assert_eq!(run.counts[3].instructions, 1003);
+        assert_eq!(run.trailer.stack_bytes, 4096);
+        assert!(parse_outputs(&bytes, 6).is_err(), "wrong step count");
+        assert!(
+            parse_outputs(&bytes[..bytes.len() - 1], 5).is_err(),
+            "truncated"
+        );
+        let mut bad_source = bytes.clone();
+        // First roller's inner film source of the first record: header 16 + fixed 20 + 16.
+        bad_source[16 + 20 + 16] = 9;
+        assert!(
+            parse_outputs(&bad_source, 5).is_err(),
+            "unknown film source"
+        );
+    }
+
+    /// Reference: a single flipped mantissa bit in one field of one step must be found.
+    #[test]
+    fn comparison_finds_a_single_bit() {
+        let host: Vec<StepOutputs> = (1..=4).map(|i| outputs(12, i as f32)).collect();
+        let mut firmware = host.clone();
+        assert_eq!(compare(&host, &firmware).mismatched_steps, 0);
+        firmware[2].film_outer_m[7] = f32::from_bits(firmware[2].film_outer_m[7].to_bits() ^ 1);
+        let c = compare(&host, &firmware);
+        assert_eq!(c.mismatched_steps, 1);
+        let first = c.first_mismatch.unwrap();
+        assert!(first.starts_with("step 2: roller 7 outer film"), "{first}");
+        assert_eq!(compare(&host, &firmware[..3]).mismatched_steps, 2);
+    }
+}
