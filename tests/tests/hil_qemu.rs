@@ -100,6 +100,9 @@ fn firmware_replay_matches_the_host_bit_for_bit_and_counts_deterministically() {
     let counts =
         |d: &str| std::fs::read_to_string(dir.path().join(d).join("instructions.csv")).unwrap();
     assert_eq!(counts("a"), counts("b"));
+    // … and the same outputs, byte for byte.
+    let outputs = |d: &str| std::fs::read(dir.path().join(d).join("outputs.bin")).unwrap();
+    assert_eq!(outputs("a"), outputs("b"));
     assert_eq!(first.instructions_per_step, second.instructions_per_step);
 }
 

@@ -100,7 +100,18 @@ pub struct SynthArgs {
 pub fn run(command: TraceCommand) -> Result<()> {
     match command {
         TraceCommand::Validate(args) => {
-            let trace = read(&args)?;
+            let trace = match read(&args) {
+                Ok(trace) => trace,
+                Err(error) if args.json => {
+                    // Machine-readable verdict on stdout; the exit status still says invalid.
+                    println!(
+                        "{}",
+                        serde_json::json!({"valid": false, "error": format!("{error:#}")})
+                    );
+                    return Err(error);
+                }
+                Err(error) => return Err(error),
+            };
             if args.json {
                 println!(
                     "{}",
