@@ -9,7 +9,7 @@
 //! (C¹) beyond the outer nodes. Each contact's film is then blended with Martin's hydrodynamic
 //! film, as the coupling requires (see `coupling`).
 
-use crate::film::{ContactInput, FilmModel, FilmSource, MARTIN_CENTRAL, MARTIN_MINIMUM};
+use crate::film::{ContactInput, FilmModel, MARTIN_CENTRAL, MARTIN_MINIMUM};
 use crate::math::{exp, ln, max, min, select, sqrt};
 
 /// Loads at which the film model is evaluated, per contact kind and step.
@@ -204,42 +204,4 @@ fn min_ratio(central: &LogParabola, minimum: &LogParabola) -> (f32, f32) {
         exp(minimum.value - central.value),
         minimum.slope - central.slope,
     )
-}
-
-/// Which model serves a contact of kind `template` at load `load_n`.
-#[inline]
-pub(crate) fn source_at<F: FilmModel + ?Sized>(
-    model: &F,
-    template: &ContactInput,
-    load_n: f32,
-    lubricated: bool,
-) -> FilmSource {
-    if lubricated {
-        model.source_for(&ContactInput {
-            load_n,
-            ..*template
-        })
-    } else {
-        FilmSource::None
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn parabola_interpolates_and_extends_by_its_tangent() {
-        // ln h = 2 − 0.1λ + 0.01λ² around λ = 5 (an arbitrary smooth law).
-        let f = |l: f32| 2.0 - 0.1 * l + 0.01 * l * l;
-        let p = LogParabola::through(5.0, 1.0, [f(4.0), f(5.0), f(6.0)]);
-        for l in [4.0f32, 4.3, 5.0, 5.9, 6.0] {
-            assert!((p.at(l).0 - f(l)).abs() < 1e-5);
-            assert!((p.at(l).1 - (-0.1 + 0.02 * l)).abs() < 1e-5);
-        }
-        // Beyond: tangent at the end node, continuous in value and slope.
-        let (v6, s6) = p.at(6.0);
-        assert!((p.at(7.5).0 - (v6 + 1.5 * s6)).abs() < 1e-5);
-        assert!((p.at(7.5).1 - s6).abs() < 1e-6);
-    }
 }

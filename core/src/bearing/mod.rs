@@ -19,11 +19,11 @@ pub use output::{BearingOutput, RollerOutput, StepStatus};
 
 use crate::contact::{ContactLaw, SlicedRoller};
 use crate::error::{in_range, Allowed, ParamError};
-use crate::film::{ContactInput, FilmModel, Regime};
+use crate::film::{ContactInput, FilmModel, FilmSource, Regime};
 use crate::math::{ln, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use coupling::{solve_roller, ContactContext, RollerMemory};
-use film_law::{source_at, StepFilmLaw};
+use film_law::StepFilmLaw;
 use output::StiffnessSums;
 
 /// Everything that defines a lubricated roller bearing.
@@ -232,6 +232,10 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             .entrainment_speed_m_s(state.shaft_speed_rad_s)
             > 0.0;
         let templates = [inner.template, outer.template];
+        let served = [
+            film.served_loads(&templates[0]),
+            film.served_loads(&templates[1]),
+        ];
         let films = StepFilmLaw::new(
             film,
             templates,
@@ -281,8 +285,16 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 } else {
                     Regime::Dry
                 },
-                film_source_in: source_at(film, &templates[0], r.load.load_n, lubricated),
-                film_source_out: source_at(film, &templates[1], r.load.load_n, lubricated),
+                film_source_in: if lubricated {
+                    served[0].source_at(r.ln_load)
+                } else {
+                    FilmSource::None
+                },
+                film_source_out: if lubricated {
+                    served[1].source_at(r.ln_load)
+                } else {
+                    FilmSource::None
+                },
                 ..RollerOutput::ZERO
             };
             (r.load, roller, coupling)

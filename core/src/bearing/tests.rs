@@ -416,3 +416,53 @@ fn roller_count_must_match_the_const_generic() {
     let e = Bearing::<17, 0>::new(hub_params(0.0, Crown::None)).unwrap_err();
     assert_eq!(e.field, "slice_count");
 }
+
+/// Test double: the regression film, but claiming to serve only 100 N … 2 kN as a network.
+struct Limited;
+
+impl crate::film::FilmModel for Limited {
+    fn name(&self) -> &'static str {
+        "limited"
+    }
+    fn film(&self, contact: &crate::film::ContactInput) -> crate::film::Film {
+        Regression.film(contact)
+    }
+    fn served_loads(&self, _template: &crate::film::ContactInput) -> crate::film::ServedLoads {
+        crate::film::ServedLoads {
+            ln_load_min: 100.0f32.ln(),
+            ln_load_max: 2000.0f32.ln(),
+            source: FilmSource::NetworkInt,
+        }
+    }
+}
+
+#[test]
+fn rollers_outside_the_served_loads_are_flagged_as_fallback() {
+    let mut b =
+        Bearing::<17, 10>::new(hub_params(-2.0e-6, Crown::Logarithmic { scale: 1.0 })).unwrap();
+    let s = state(0.0, -8.0e-6, 6_000.0);
+    let out = *b.settle(&Limited, &s, SETTLE_STEPS);
+    let mut seen = (false, false);
+    for r in out.rollers.iter() {
+        let inside = r.load_n >= 100.0 && r.load_n <= 2000.0;
+        let expected = if inside {
+            FilmSource::NetworkInt
+        } else {
+            FilmSource::Fallback
+        };
+        assert_eq!(r.film_source_in, expected, "load {}", r.load_n);
+        assert_eq!(r.film_source_out, expected, "load {}", r.load_n);
+        seen.0 |= inside;
+        seen.1 |= !inside;
+    }
+    assert!(
+        seen.0 && seen.1,
+        "the case must have rollers on both sides of the interval"
+    );
+    // The same bearing at standstill reports no film source at all.
+    let out = *b.settle(&Limited, &state(0.0, -8.0e-6, 0.0), SETTLE_STEPS);
+    assert!(out
+        .rollers
+        .iter()
+        .all(|r| r.film_source_in == FilmSource::None));
+}

@@ -5,7 +5,7 @@
 //! w = 4.896·η₀u_mR/h₀ per unit length, i.e. h₀/R = 4.896·U/W. At X = 0 the film is
 //! h_c/R = 6·U/W, Moes' rigid iso-viscous asymptote H_RI = 3/M (PHYSICS.md §5.1).
 
-use super::{ContactInput, Film, FilmModel, FilmSource};
+use super::{ContactInput, Film, FilmModel, FilmSource, ServedLoads};
 
 /// Martin's minimum-film constant: h₀/R = 4.896·U/W.
 pub const MARTIN_MINIMUM: f32 = 4.896;
@@ -40,11 +40,12 @@ impl FilmModel for Hydrodynamic {
         "hydrodynamic"
     }
 
-    fn source_for(&self, contact: &ContactInput) -> FilmSource {
-        if contact.is_valid() {
-            FilmSource::Regression
-        } else {
-            FilmSource::None
+    fn served_loads(&self, _template: &ContactInput) -> ServedLoads {
+        // The formula serves every load; `film` returns zero for an invalid contact.
+        ServedLoads {
+            ln_load_min: f32::MIN,
+            ln_load_max: f32::MAX,
+            source: FilmSource::Regression,
         }
     }
 

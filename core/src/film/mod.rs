@@ -77,11 +77,48 @@ pub trait FilmModel {
     /// Central and minimum film of one contact.
     fn film(&self, contact: &ContactInput) -> Film;
 
-    /// Which model would serve `contact` (the model itself, or a fallback), without computing
-    /// the film. The bearing step calls the model at a few loads per step and asks this for
-    /// every contact; a network overrides it with its domain guard.
-    fn source_for(&self, contact: &ContactInput) -> FilmSource {
-        self.film(contact).source
+    /// The loads at which this model itself serves contacts like `template` (its load is
+    /// ignored): an interval of ln Q (N) and the source it reports there. Outside the interval
+    /// the model falls back. Every domain test of a film model is monotone in ln Q once the
+    /// other inputs are fixed, so the bearing step asks this once per contact kind and step and
+    /// flags each roller with two comparisons. The default serves every load and reports the
+    /// source of one call.
+    fn served_loads(&self, template: &ContactInput) -> ServedLoads {
+        ServedLoads {
+            ln_load_min: f32::MIN,
+            ln_load_max: f32::MAX,
+            source: self
+                .film(&ContactInput {
+                    load_n: 1000.0,
+                    ..*template
+                })
+                .source,
+        }
+    }
+}
+
+/// Where a film model serves contacts of one kind: ln Q ∈ [`ln_load_min`, `ln_load_max`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ServedLoads {
+    /// Smallest ln Q served (ln N).
+    pub ln_load_min: f32,
+    /// Largest ln Q served (ln N).
+    pub ln_load_max: f32,
+    /// The source reported for served contacts.
+    pub source: FilmSource,
+}
+
+impl ServedLoads {
+    /// The source of a contact at ln Q: the model's own inside the interval,
+    /// [`FilmSource::Fallback`] outside. Two comparisons, no branch.
+    #[inline]
+    pub fn source_at(&self, ln_load: f32) -> FilmSource {
+        let inside = (ln_load >= self.ln_load_min) & (ln_load <= self.ln_load_max);
+        if inside {
+            self.source
+        } else {
+            FilmSource::Fallback
+        }
     }
 }
 

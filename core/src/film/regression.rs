@@ -9,7 +9,7 @@
 //! They are evaluated in logarithms of the dimensionless groups, at a fixed cost.
 
 use super::groups::LnGroups;
-use super::{ContactInput, Film, FilmModel, FilmSource};
+use super::{ContactInput, Film, FilmModel, FilmSource, ServedLoads};
 use crate::math::{exp, pow, select};
 
 /// Exponent of W in the Dowson–Toyoda central film: h_c ∝ Q^−0.10.
@@ -54,9 +54,13 @@ impl FilmModel for Regression {
         "regression"
     }
 
-    fn source_for(&self, _contact: &ContactInput) -> FilmSource {
-        // The formula serves every contact; `film` returns zero for an invalid one.
-        FilmSource::Regression
+    fn served_loads(&self, _template: &ContactInput) -> ServedLoads {
+        // The formula serves every load; `film` returns zero for an invalid contact.
+        ServedLoads {
+            ln_load_min: f32::MIN,
+            ln_load_max: f32::MAX,
+            source: FilmSource::Regression,
+        }
     }
 
     fn film(&self, contact: &ContactInput) -> Film {
