@@ -232,9 +232,19 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             .entrainment_speed_m_s(state.shaft_speed_rad_s)
             > 0.0;
         let templates = [inner.template, outer.template];
+        // At standstill every contact reports no film source: an interval covering every load
+        // with source `None`, chosen field by field so that no roller takes a branch.
+        let standstill = |s: crate::film::ServedLoads| crate::film::ServedLoads {
+            ln_load_min: crate::math::select(lubricated, s.ln_load_min, f32::MIN),
+            ln_load_max: crate::math::select(lubricated, s.ln_load_max, f32::MAX),
+            source: [FilmSource::None, s.source]
+                .get(usize::from(lubricated))
+                .copied()
+                .unwrap_or(FilmSource::None),
+        };
         let served = [
-            film.served_loads(&templates[0]),
-            film.served_loads(&templates[1]),
+            standstill(film.served_loads(&templates[0])),
+            standstill(film.served_loads(&templates[1])),
         ];
         let films = StepFilmLaw::new(
             film,
@@ -268,6 +278,13 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             let s0 = r.load.stiffness_n_per_m;
             let coupling = r.film_slope_m_per_n / (1.0 - s0 * r.film_slope_m_per_n);
             let shown = |h: f32| crate::math::select(lubricated, h, 0.0);
+            // A table, not an `if`: the work must not depend on the speed.
+            let shown_regime = |r: Regime| {
+                [Regime::Dry, r]
+                    .get(usize::from(lubricated))
+                    .copied()
+                    .unwrap_or(Regime::Dry)
+            };
             let roller = RollerOutput {
                 approach_m: r.approach_m,
                 central_film_in_m: shown(central_in),
@@ -275,26 +292,10 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 min_film_in_m: shown(min_in),
                 min_film_out_m: shown(min_out),
                 roller_stiffness_n_per_m: s0 / (1.0 - s0 * r.film_slope_m_per_n),
-                regime_in: if lubricated {
-                    r.regimes[0]
-                } else {
-                    Regime::Dry
-                },
-                regime_out: if lubricated {
-                    r.regimes[1]
-                } else {
-                    Regime::Dry
-                },
-                film_source_in: if lubricated {
-                    served[0].source_at(r.ln_load)
-                } else {
-                    FilmSource::None
-                },
-                film_source_out: if lubricated {
-                    served[1].source_at(r.ln_load)
-                } else {
-                    FilmSource::None
-                },
+                regime_in: shown_regime(r.regimes[0]),
+                regime_out: shown_regime(r.regimes[1]),
+                film_source_in: served[0].source_at(r.ln_load),
+                film_source_out: served[1].source_at(r.ln_load),
                 ..RollerOutput::ZERO
             };
             (r.load, roller, coupling)
