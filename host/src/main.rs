@@ -8,7 +8,11 @@ use clap::{Parser, Subcommand};
 mod cli;
 
 #[derive(Parser)]
-#[command(name = "bearing", version, about = "Lubricated roller-bearing model: EHL film, bearing forces, shaft simulation")]
+#[command(
+    name = "bearing",
+    version,
+    about = "Lubricated roller-bearing model: EHL film, bearing forces, shaft simulation"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

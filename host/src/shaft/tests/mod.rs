@@ -1,0 +1,5 @@
+//! Tests of the shaft simulator against independent references (closed forms, published
+//! numbers). Each test names its reference.
+
+mod element_tests;
+mod modes_tests;
