@@ -11,6 +11,7 @@ pub mod bearing;
 pub mod damping;
 pub mod disk;
 pub mod element;
+pub mod integrator;
 pub mod loads;
 pub mod model;
 pub mod modes;

@@ -2,4 +2,5 @@
 //! numbers). Each test names its reference.
 
 mod element_tests;
+mod integrator_tests;
 mod modes_tests;
