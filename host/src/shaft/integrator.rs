@@ -97,6 +97,9 @@ pub enum StepError {
         /// Time (s).
         time: f64,
     },
+    /// The loads cannot be evaluated (e.g. a speed outside the motor range).
+    #[error("load: {0}")]
+    Load(String),
     /// The effective matrix K* or M is singular.
     #[error("singular effective system matrix (check mass and step size)")]
     SingularSystem,
@@ -148,6 +151,8 @@ pub struct Integrator {
     pub reactions: Vec<BearingReaction>,
     /// Statistics of the last step.
     pub stats: StepStats,
+    /// Wall time spent in bearing evaluations since construction (s).
+    pub bearing_seconds: f64,
 }
 
 impl Integrator {
@@ -215,6 +220,7 @@ impl Integrator {
             fb_prev: DVector::zeros(2 * nb),
             reactions: vec![BearingReaction::default(); nb],
             stats: StepStats::default(),
+            bearing_seconds: 0.0,
         };
         let (u, w) = me.bearing_kinematics(&q, &v);
         me.evaluate_bearings(&u, &w, time)?;
@@ -264,6 +270,7 @@ impl Integrator {
     }
 
     fn evaluate_bearings(&mut self, u: &[f64], w: &[f64], time: f64) -> Result<(), StepError> {
+        let clock = std::time::Instant::now();
         for (b, model) in self.bearings.iter_mut().enumerate() {
             let state = BearingState {
                 displacement: [u[2 * b], u[2 * b + 1]],
@@ -276,6 +283,7 @@ impl Integrator {
                 .map_err(|source| StepError::Bearing { time, source })?;
         }
         self.stats.bearing_evaluations += 1;
+        self.bearing_seconds += clock.elapsed().as_secs_f64();
         Ok(())
     }
 

@@ -103,12 +103,27 @@ impl LoadSet {
         include_dynamic: bool,
         f: &mut [f64],
     ) -> Result<(), super::motor::SpeedOutOfRange> {
+        self.add_forces_mapped(time, spin_speed, gravity_vector, include_dynamic, &|d| d, f)
+    }
+
+    /// As [`LoadSet::add_forces`] into a vector whose index of global DOF d is `map(d)` (a
+    /// reduced model keeps the loaded nodes' DOFs; `gravity_vector` must already be in the
+    /// target coordinates).
+    pub fn add_forces_mapped(
+        &self,
+        time: f64,
+        spin_speed: f64,
+        gravity_vector: &[f64],
+        include_dynamic: bool,
+        map: &dyn Fn(usize) -> usize,
+        f: &mut [f64],
+    ) -> Result<(), super::motor::SpeedOutOfRange> {
         let angle = spin_speed * time;
         for load in &self.loads {
             match *load {
                 Load::Static { node, force } => {
-                    f[4 * node] += force[0];
-                    f[4 * node + 1] += force[1];
+                    f[map(4 * node)] += force[0];
+                    f[map(4 * node + 1)] += force[1];
                 }
                 Load::Gravity { acceleration } => {
                     for (fi, gi) in f.iter_mut().zip(gravity_vector) {
@@ -122,8 +137,8 @@ impl LoadSet {
                 } => {
                     if include_dynamic {
                         let amp = mass_eccentricity * spin_speed * spin_speed;
-                        f[4 * node] += amp * (angle + phase).cos();
-                        f[4 * node + 1] += amp * (angle + phase).sin();
+                        f[map(4 * node)] += amp * (angle + phase).cos();
+                        f[map(4 * node + 1)] += amp * (angle + phase).sin();
                     }
                 }
                 Load::GearMesh(mesh) => {
@@ -138,11 +153,22 @@ impl LoadSet {
                         };
                         steady.force(mean, 0.0)
                     };
-                    f[4 * mesh.node] += force[0];
-                    f[4 * mesh.node + 1] += force[1];
+                    f[map(4 * mesh.node)] += force[0];
+                    f[map(4 * mesh.node + 1)] += force[1];
                 }
             }
         }
         Ok(())
+    }
+}
+
+impl Load {
+    /// The node a point load acts on (None for gravity).
+    pub fn node(&self) -> Option<usize> {
+        match self {
+            Load::Static { node, .. } | Load::Unbalance { node, .. } => Some(*node),
+            Load::GearMesh(m) => Some(m.node),
+            Load::Gravity { .. } => None,
+        }
     }
 }

@@ -8,6 +8,7 @@
 //! University Press (2010), ch. 5 (finite-element rotor models).
 
 pub mod bearing;
+pub mod config;
 pub mod damping;
 pub mod disk;
 pub mod element;
@@ -16,6 +17,12 @@ pub mod loads;
 pub mod model;
 pub mod modes;
 pub mod motor;
+pub mod operating;
+pub mod reduction;
+pub mod simulate;
+pub mod statics;
+pub mod sweep;
+pub mod system;
 
 #[cfg(test)]
 mod tests;

@@ -1,0 +1,111 @@
+//! Static equilibrium of the rotor on its (nonlinear) bearings under the steady loads (static
+//! forces, gravity, mean gear forces): K q − Σ Pᵀ F_b(P q) = f_static, solved by Newton with the
+//! bearings' tangent stiffness (K + Σ Pᵀ K_b P). Iterations are bounded and a failure is reported.
+
+use nalgebra::DVector;
+
+use super::bearing::{BearingError, BearingModel, BearingReaction, BearingState};
+use super::model::RotorModel;
+use super::motor::SpeedOutOfRange;
+
+/// Errors of the static solution.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum StaticError {
+    /// A bearing model failed.
+    #[error(transparent)]
+    Bearing(#[from] BearingError),
+    /// The loads cannot be evaluated at this speed.
+    #[error(transparent)]
+    Speed(#[from] SpeedOutOfRange),
+    /// The tangent stiffness is singular (rotor not held, or all bearings unloaded).
+    #[error("singular tangent stiffness at Newton iteration {iteration}: is the rotor held by its bearings?")]
+    Singular {
+        /// Iteration.
+        iteration: usize,
+    },
+    /// Newton did not converge.
+    #[error("static equilibrium did not converge in {iterations} iterations (residual {residual:.3e} N)")]
+    NotConverged {
+        /// Iterations done.
+        iterations: usize,
+        /// Largest residual force (N).
+        residual: f64,
+    },
+}
+
+/// Equilibrium state.
+#[derive(Debug, Clone)]
+pub struct Equilibrium {
+    /// Displacements (m, rad).
+    pub q: DVector<f64>,
+    /// Bearing reactions at the equilibrium (one per bearing).
+    pub reactions: Vec<BearingReaction>,
+    /// The static load vector (N).
+    pub load: DVector<f64>,
+    /// Newton iterations used.
+    pub iterations: usize,
+}
+
+/// Solves the equilibrium at spin speed Ω (rad/s) with the given bearing models.
+pub fn equilibrium(
+    model: &RotorModel,
+    spin_speed: f64,
+    bearings: &mut [Box<dyn BearingModel>],
+) -> Result<Equilibrium, StaticError> {
+    let n = model.n_dof();
+    let mut load = DVector::zeros(n);
+    model.description.loads.add_forces(
+        0.0,
+        spin_speed,
+        model.gravity_vector.as_slice(),
+        false,
+        load.as_mut_slice(),
+    )?;
+    let dofs = model.bearing_dofs();
+    let scale = load.amax().max(1.0);
+    let mut q = DVector::zeros(n);
+    let max_iterations = 100;
+    let mut residual = f64::INFINITY;
+    for iteration in 0..max_iterations {
+        let mut k = model.stiffness.clone();
+        let mut r = &load - &model.stiffness * &q;
+        let mut reactions = Vec::with_capacity(dofs.len());
+        for (b, model_b) in bearings.iter_mut().enumerate() {
+            let d = dofs[b];
+            let react = model_b.evaluate(&BearingState {
+                displacement: [q[d[0]], q[d[1]]],
+                velocity: [0.0; 2],
+                spin_speed,
+                time: 0.0,
+            })?;
+            for i in 0..2 {
+                r[d[i]] += react.force[i];
+                for j in 0..2 {
+                    k[(d[i], d[j])] += react.stiffness[i][j];
+                }
+            }
+            reactions.push(react);
+        }
+        residual = r.amax();
+        if residual <= 1e-9 * scale {
+            return Ok(Equilibrium {
+                q,
+                reactions,
+                load,
+                iterations: iteration,
+            });
+        }
+        let dq = k
+            .lu()
+            .solve(&r)
+            .ok_or(StaticError::Singular { iteration })?;
+        if !dq.iter().all(|x| x.is_finite()) {
+            return Err(StaticError::Singular { iteration });
+        }
+        q += dq;
+    }
+    Err(StaticError::NotConverged {
+        iterations: max_iterations,
+        residual,
+    })
+}
