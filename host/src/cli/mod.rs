@@ -1,1 +1,2 @@
 //! One module per `bearing` subcommand.
+pub mod shaft;

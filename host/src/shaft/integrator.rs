@@ -22,8 +22,16 @@
 //! solved by Newton with the tangent I + (1−α) S (K_b + γ/(βh) C_b) — the bearing's own stiffness
 //! and damping matrices. Iterations are bounded; a step that does not converge returns an error
 //! naming the time, the iteration count and the residual (it is never silently accepted).
+//!
+//! Cost per step: the operators K*⁻¹(M/(βh²) + (1−α)γ/(βh) D) and (1−α)K*⁻¹D are formed once,
+//! so the linear part is two dense matrix–vector products (four with HHT-α); the constant load
+//! (gravity) is pre-solved and the time-varying loads, which act on a few DOFs, are applied
+//! through the matching columns of K*⁻¹. Nothing is allocated per step.
 
 use nalgebra::{DMatrix, DVector};
+
+/// Most bearings one rotor may have (the Newton system is solved on the stack).
+pub const MAX_BEARINGS: usize = 8;
 
 use super::bearing::{BearingError, BearingModel, BearingReaction, BearingState};
 
@@ -100,6 +108,9 @@ pub enum StepError {
     /// The loads cannot be evaluated (e.g. a speed outside the motor range).
     #[error("load: {0}")]
     Load(String),
+    /// More bearings than [`MAX_BEARINGS`].
+    #[error("{0} bearings: at most {MAX_BEARINGS} are supported")]
+    TooManyBearings(usize),
     /// The effective matrix K* or M is singular.
     #[error("singular effective system matrix (check mass and step size)")]
     SingularSystem,
@@ -127,7 +138,7 @@ pub struct RotorState {
     pub a: DVector<f64>,
 }
 
-/// Fixed-step integrator of M q̈ + D q̇ + K q = f(t) + P F_b for one spin speed.
+/// Fixed-step integrator of M q̈ + D q̇ + K q = f_const + f(t) + P F_b for one spin speed.
 pub struct Integrator {
     alpha: f64,
     beta: f64,
@@ -135,9 +146,16 @@ pub struct Integrator {
     dt: f64,
     spin_speed: f64,
     mass: DMatrix<f64>,
-    damping: DMatrix<f64>,
     stiffness: DMatrix<f64>,
+    /// K*⁻¹ (M/(βh²) + (1−α)γ/(βh) D).
+    op_q: DMatrix<f64>,
+    /// −(1−α) K*⁻¹ D.
+    op_v: DMatrix<f64>,
+    /// HHT terms −α K*⁻¹ K and −α K*⁻¹ D (None for α = 0).
+    op_hht: Option<(DMatrix<f64>, DMatrix<f64>)>,
     k_eff_inv: DMatrix<f64>,
+    /// K*⁻¹ f_const.
+    const_response: DVector<f64>,
     z: DMatrix<f64>,
     s: DMatrix<f64>,
     bearing_dofs: Vec<[usize; 2]>,
@@ -147,6 +165,9 @@ pub struct Integrator {
     pub state: RotorState,
     f_prev: DVector<f64>,
     fb_prev: DVector<f64>,
+    q_pred: DVector<f64>,
+    v_pred: DVector<f64>,
+    q_lin: DVector<f64>,
     /// Last bearing reactions (one per bearing).
     pub reactions: Vec<BearingReaction>,
     /// Statistics of the last step.
@@ -155,10 +176,44 @@ pub struct Integrator {
     pub bearing_seconds: f64,
 }
 
+/// Solves the small dense system a·x = b in place (partial pivoting); false when singular.
+fn solve_small(
+    a: &mut [[f64; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS],
+    b: &mut [f64],
+    n: usize,
+) -> bool {
+    for col in 0..n {
+        let pivot = (col..n)
+            .max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))
+            .unwrap_or(col);
+        if a[pivot][col].abs() < 1e-300 || !a[pivot][col].is_finite() {
+            return false;
+        }
+        a.swap(col, pivot);
+        b.swap(col, pivot);
+        for row in col + 1..n {
+            let f = a[row][col] / a[col][col];
+            for k in col..n {
+                a[row][k] -= f * a[col][k];
+            }
+            b[row] -= f * b[col];
+        }
+    }
+    for col in (0..n).rev() {
+        let mut v = b[col];
+        for k in col + 1..n {
+            v -= a[col][k] * b[k];
+        }
+        b[col] = v / a[col][col];
+    }
+    true
+}
+
 impl Integrator {
     /// Sets up the integrator. `damping` is D = C + ΩG (linear part), `bearing_dofs` the x, y
-    /// DOF indices of each bearing, `f0` the external load at the initial time. The initial
-    /// acceleration is solved from the equation of motion.
+    /// DOF indices of each bearing, `constant_load` the load present at all times (gravity),
+    /// `f0` the time-varying load at the initial time. The initial acceleration is solved from
+    /// the equation of motion.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         scheme: Scheme,
@@ -171,15 +226,28 @@ impl Integrator {
         bearings: Vec<Box<dyn BearingModel>>,
         newton: NewtonSettings,
         initial: (f64, DVector<f64>, DVector<f64>),
+        constant_load: DVector<f64>,
         f0: DVector<f64>,
     ) -> Result<Integrator, StepError> {
+        let nb = bearing_dofs.len();
+        if nb > MAX_BEARINGS {
+            return Err(StepError::TooManyBearings(nb));
+        }
         let (alpha, beta, gamma) = scheme.parameters();
         let n = mass.nrows();
-        let k_eff = &mass / (beta * dt * dt)
-            + &damping * ((1.0 - alpha) * gamma / (beta * dt))
-            + &stiffness * (1.0 - alpha);
+        let c1 = gamma / (beta * dt);
+        let k_eff =
+            &mass / (beta * dt * dt) + &damping * ((1.0 - alpha) * c1) + &stiffness * (1.0 - alpha);
         let k_eff_inv = k_eff.try_inverse().ok_or(StepError::SingularSystem)?;
-        let nb = bearing_dofs.len();
+        let op_q = &k_eff_inv * (&mass / (beta * dt * dt) + &damping * ((1.0 - alpha) * c1));
+        let op_v = &k_eff_inv * &damping * (-(1.0 - alpha));
+        let op_hht = (alpha != 0.0).then(|| {
+            (
+                &k_eff_inv * &stiffness * (-alpha),
+                &k_eff_inv * &damping * (-alpha),
+            )
+        });
+        let const_response = &k_eff_inv * &constant_load;
         let mut z = DMatrix::zeros(n, 2 * nb);
         for (b, dofs) in bearing_dofs.iter().enumerate() {
             for (c, &dof) in dofs.iter().enumerate() {
@@ -202,9 +270,12 @@ impl Integrator {
             dt,
             spin_speed,
             mass,
-            damping,
             stiffness,
+            op_q,
+            op_v,
+            op_hht,
             k_eff_inv,
+            const_response,
             z,
             s,
             bearing_dofs,
@@ -218,18 +289,29 @@ impl Integrator {
             },
             f_prev: f0.clone(),
             fb_prev: DVector::zeros(2 * nb),
+            q_pred: DVector::zeros(n),
+            v_pred: DVector::zeros(n),
+            q_lin: DVector::zeros(n),
             reactions: vec![BearingReaction::default(); nb],
             stats: StepStats::default(),
             bearing_seconds: 0.0,
         };
-        let (u, w) = me.bearing_kinematics(&q, &v);
-        me.evaluate_bearings(&u, &w, time)?;
-        for b in 0..nb {
-            me.fb_prev[2 * b] = me.reactions[b].force[0];
-            me.fb_prev[2 * b + 1] = me.reactions[b].force[1];
+        let mut u = [0.0; 2 * MAX_BEARINGS];
+        let mut w = [0.0; 2 * MAX_BEARINGS];
+        for (b, d) in me.bearing_dofs.iter().enumerate() {
+            for c in 0..2 {
+                u[2 * b + c] = q[d[c]];
+                w[2 * b + c] = v[d[c]];
+            }
         }
-        let mut rhs = f0 - &me.damping * &v - &me.stiffness * &q;
-        me.scatter_bearing_forces(&me.fb_prev.clone(), 1.0, &mut rhs);
+        me.evaluate_bearings(&u, &w, time)?;
+        let mut rhs = constant_load + f0 - &damping * &v - &me.stiffness * &q;
+        for (b, d) in me.bearing_dofs.iter().enumerate() {
+            for c in 0..2 {
+                me.fb_prev[2 * b + c] = me.reactions[b].force[c];
+                rhs[d[c]] += me.reactions[b].force[c];
+            }
+        }
         let chol = me
             .mass
             .clone()
@@ -247,26 +329,6 @@ impl Integrator {
     /// Number of DOFs.
     pub fn n_dof(&self) -> usize {
         self.mass.nrows()
-    }
-
-    /// Bearing displacements and velocities stacked [x₀, y₀, x₁, y₁, …].
-    fn bearing_kinematics(&self, q: &DVector<f64>, v: &DVector<f64>) -> (Vec<f64>, Vec<f64>) {
-        let mut u = Vec::with_capacity(2 * self.bearing_dofs.len());
-        let mut w = Vec::with_capacity(2 * self.bearing_dofs.len());
-        for dofs in &self.bearing_dofs {
-            for &d in dofs {
-                u.push(q[d]);
-                w.push(v[d]);
-            }
-        }
-        (u, w)
-    }
-
-    fn scatter_bearing_forces(&self, fb: &DVector<f64>, factor: f64, f: &mut DVector<f64>) {
-        for (b, dofs) in self.bearing_dofs.iter().enumerate() {
-            f[dofs[0]] += factor * fb[2 * b];
-            f[dofs[1]] += factor * fb[2 * b + 1];
-        }
     }
 
     fn evaluate_bearings(&mut self, u: &[f64], w: &[f64], time: f64) -> Result<(), StepError> {
@@ -287,45 +349,72 @@ impl Integrator {
         Ok(())
     }
 
-    /// Advances one step with the external load `f1` at the new time.
+    /// Adds factor · K*⁻¹ f to q_lin using only the non-zero entries of f.
+    fn add_sparse_response(
+        q_lin: &mut DVector<f64>,
+        k_eff_inv: &DMatrix<f64>,
+        f: &DVector<f64>,
+        factor: f64,
+    ) {
+        for (j, &fj) in f.iter().enumerate() {
+            if fj != 0.0 {
+                q_lin.axpy(factor * fj, &k_eff_inv.column(j), 1.0);
+            }
+        }
+    }
+
+    /// Advances one step with the time-varying load `f1` at the new time (the constant load
+    /// given at construction is added internally).
     pub fn step(&mut self, f1: &DVector<f64>) -> Result<(), StepError> {
         let (alpha, beta, gamma, h) = (self.alpha, self.beta, self.gamma, self.dt);
         let t1 = self.state.time + h;
-        let st = &self.state;
-        let q_pred = &st.q + &st.v * h + &st.a * ((0.5 - beta) * h * h);
-        let v_pred = &st.v + &st.a * ((1.0 - gamma) * h);
         let c1 = gamma / (beta * h);
-        // r = M q̃/(βh²) + (1−α) D (c1 q̃ − ṽ) − α(D v₀ + K q₀) + (1−α) f₁ + α(f₀ + P F_b₀)
-        let mut r = &self.mass * &q_pred * (1.0 / (beta * h * h))
-            + &self.damping * (&q_pred * ((1.0 - alpha) * c1) - &v_pred * (1.0 - alpha))
-            + f1 * (1.0 - alpha);
-        if alpha != 0.0 {
-            r -= (&self.damping * &st.v + &self.stiffness * &st.q) * alpha;
-            r += &self.f_prev * alpha;
-            let fb_prev = self.fb_prev.clone();
-            self.scatter_bearing_forces(&fb_prev, alpha, &mut r);
+        // Predictors q̃, ṽ.
+        self.q_pred.copy_from(&self.state.q);
+        self.q_pred.axpy(h, &self.state.v, 1.0);
+        self.q_pred.axpy((0.5 - beta) * h * h, &self.state.a, 1.0);
+        self.v_pred.copy_from(&self.state.v);
+        self.v_pred.axpy((1.0 - gamma) * h, &self.state.a, 1.0);
+        // Linear response q_lin = K*⁻¹ r (without the new bearing forces).
+        self.q_lin.copy_from(&self.const_response);
+        self.q_lin.gemv(1.0, &self.op_q, &self.q_pred, 1.0);
+        self.q_lin.gemv(1.0, &self.op_v, &self.v_pred, 1.0);
+        Self::add_sparse_response(&mut self.q_lin, &self.k_eff_inv, f1, 1.0 - alpha);
+        if let Some((op_k, op_d)) = &self.op_hht {
+            self.q_lin.gemv(1.0, op_k, &self.state.q, 1.0);
+            self.q_lin.gemv(1.0, op_d, &self.state.v, 1.0);
+            Self::add_sparse_response(&mut self.q_lin, &self.k_eff_inv, &self.f_prev, alpha);
+            self.q_lin.gemv(alpha, &self.z, &self.fb_prev, 1.0);
         }
-        let q_lin = &self.k_eff_inv * r;
         let nb = self.bearing_dofs.len();
-        let (u_lin, _) = self.bearing_kinematics(&q_lin, &q_lin);
-        let (u_pred, w_pred) = self.bearing_kinematics(&q_pred, &v_pred);
+        let m = 2 * nb;
+        let mut u_lin = [0.0; 2 * MAX_BEARINGS];
+        let mut u_pred = [0.0; 2 * MAX_BEARINGS];
+        let mut w_pred = [0.0; 2 * MAX_BEARINGS];
+        for (b, d) in self.bearing_dofs.iter().enumerate() {
+            for c in 0..2 {
+                u_lin[2 * b + c] = self.q_lin[d[c]];
+                u_pred[2 * b + c] = self.q_pred[d[c]];
+                w_pred[2 * b + c] = self.v_pred[d[c]];
+            }
+        }
         // Warm start: last step's bearing forces.
-        let mut u: Vec<f64> = (0..2 * nb)
-            .map(|i| {
-                u_lin[i]
-                    + (1.0 - alpha)
-                        * (0..2 * nb)
-                            .map(|j| self.s[(i, j)] * self.fb_prev[j])
-                            .sum::<f64>()
-            })
-            .collect();
+        let mut u = [0.0; 2 * MAX_BEARINGS];
+        for i in 0..m {
+            let mut su = 0.0;
+            for j in 0..m {
+                su += self.s[(i, j)] * self.fb_prev[j];
+            }
+            u[i] = u_lin[i] + (1.0 - alpha) * su;
+        }
         self.stats = StepStats::default();
         let mut converged = nb == 0;
         let mut correction = 0.0;
+        let mut w = [0.0; 2 * MAX_BEARINGS];
         while !converged {
-            let w: Vec<f64> = (0..2 * nb)
-                .map(|i| w_pred[i] + c1 * (u[i] - u_pred[i]))
-                .collect();
+            for i in 0..m {
+                w[i] = w_pred[i] + c1 * (u[i] - u_pred[i]);
+            }
             self.evaluate_bearings(&u, &w, t1)?;
             if self.stats.iterations >= self.newton.max_iterations {
                 return Err(StepError::NotConverged {
@@ -335,38 +424,37 @@ impl Integrator {
                 });
             }
             self.stats.iterations += 1;
-            // Residual and tangent.
-            let mut res = DVector::zeros(2 * nb);
-            let mut tangent = DMatrix::identity(2 * nb, 2 * nb);
-            for i in 0..2 * nb {
+            // Residual R(u) and tangent I + (1−α) S (K_b + c1 C_b) (K_b, C_b block-diagonal).
+            let mut tangent = [[0.0; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS];
+            let mut du = [0.0; 2 * MAX_BEARINGS];
+            for i in 0..m {
+                tangent[i][i] = 1.0;
                 let mut su = 0.0;
-                for j in 0..2 * nb {
+                for j in 0..m {
                     let (b, c) = (j / 2, j % 2);
-                    su += self.s[(i, j)] * self.reactions[b].force[c];
-                    // Row i of S·(K_b + c1 C_b), block-diagonal K_b, C_b.
+                    let r = &self.reactions[b];
+                    let sij = self.s[(i, j)];
+                    su += sij * r.force[c];
                     for k in 0..2 {
-                        let col = 2 * b + k;
-                        let kb = self.reactions[b].stiffness[c][k]
-                            + c1 * self.reactions[b].damping[c][k];
-                        tangent[(i, col)] += (1.0 - alpha) * self.s[(i, j)] * kb;
+                        let kb = r.stiffness[c][k] + c1 * r.damping[c][k];
+                        tangent[i][2 * b + k] += (1.0 - alpha) * sij * kb;
                     }
                 }
-                res[i] = u[i] - u_lin[i] - (1.0 - alpha) * su;
+                du[i] = -(u[i] - u_lin[i] - (1.0 - alpha) * su);
             }
-            let du = tangent
-                .lu()
-                .solve(&(-res))
-                .ok_or(StepError::SingularTangent { time: t1 })?;
+            if !solve_small(&mut tangent, &mut du, m) {
+                return Err(StepError::SingularTangent { time: t1 });
+            }
             let mut size = 0.0f64;
             let mut scale = 0.0f64;
-            for i in 0..2 * nb {
+            for i in 0..m {
                 u[i] += du[i];
                 size = size.max(du[i].abs());
                 scale = scale.max(u[i].abs());
             }
             correction = size;
             // f64::max skips NaN: a non-finite iterate must fail the step, never pass the test.
-            if !u.iter().chain(du.iter()).all(|x| x.is_finite()) {
+            if !u[..m].iter().chain(du[..m].iter()).all(|x| x.is_finite()) {
                 return Err(StepError::NotConverged {
                     time: t1,
                     iterations: self.stats.iterations,
@@ -378,32 +466,31 @@ impl Integrator {
         }
         // The forces of the last evaluation are used: they were taken at u − Δu with Δu within
         // the tolerance, so q₁ below is consistent with them to that tolerance.
-        let mut fb = DVector::zeros(2 * nb);
         for b in 0..nb {
-            fb[2 * b] = self.reactions[b].force[0];
-            fb[2 * b + 1] = self.reactions[b].force[1];
+            self.fb_prev[2 * b] = self.reactions[b].force[0];
+            self.fb_prev[2 * b + 1] = self.reactions[b].force[1];
         }
-        let q1 = q_lin + &self.z * &fb * (1.0 - alpha);
-        let a1 = (&q1 - &q_pred) * (1.0 / (beta * h * h));
-        let v1 = v_pred + &a1 * (gamma * h);
-        let (uc, wc) = self.bearing_kinematics(&q1, &v1);
+        // q₁ = q_lin + (1−α) Z F_b;  a₁ = (q₁ − q̃)/(βh²);  v₁ = ṽ + γh a₁.
+        let st = &mut self.state;
+        st.q.copy_from(&self.q_lin);
+        st.q.gemv(1.0 - alpha, &self.z, &self.fb_prev, 1.0);
+        st.a.copy_from(&st.q);
+        st.a.axpy(-1.0, &self.q_pred, 1.0);
+        st.a *= 1.0 / (beta * h * h);
+        st.v.copy_from(&self.v_pred);
+        st.v.axpy(gamma * h, &st.a, 1.0);
+        st.time = t1;
         for (b, model) in self.bearings.iter_mut().enumerate() {
+            let d = self.bearing_dofs[b];
             let state = BearingState {
-                displacement: [uc[2 * b], uc[2 * b + 1]],
-                velocity: [wc[2 * b], wc[2 * b + 1]],
+                displacement: [st.q[d[0]], st.q[d[1]]],
+                velocity: [st.v[d[0]], st.v[d[1]]],
                 spin_speed: self.spin_speed,
                 time: t1,
             };
             model.commit(&state, h);
         }
-        self.state = RotorState {
-            time: t1,
-            q: q1,
-            v: v1,
-            a: a1,
-        };
         self.f_prev.copy_from(f1);
-        self.fb_prev = fb;
         Ok(())
     }
 

@@ -81,8 +81,8 @@ pub fn state_matrix(
     Ok(a)
 }
 
-/// The oscillating modes (Im λ > 0) of M q̈ + D q̇ + K q = 0, ascending in frequency, at most
-/// `max_modes` of them. Rigid-body (λ ≈ 0) and overdamped (real λ) roots are left out.
+/// The oscillating modes (Im λ > 0) of M q̈ + D q̇ + K q = 0: the `max_modes` of lowest |λ|,
+/// returned ascending in Im λ. Rigid-body (λ ≈ 0) and overdamped (real λ) roots are left out.
 pub fn damped_modes(
     m: &DMatrix<f64>,
     k: &DMatrix<f64>,
@@ -99,8 +99,11 @@ pub fn damped_modes(
     // Frequencies below this are rigid-body or numerical zeros.
     let floor = 1e-7 * largest.max(1e-300) + 1e-9 * scale.sqrt();
     let mut roots: Vec<Complex<f64>> = eig.iter().copied().filter(|z| z.im > floor).collect();
-    roots.sort_by(|p, q| p.im.total_cmp(&q.im));
+    // Keep the modes of lowest undamped frequency |λ| (heavily damped element modes with a
+    // small Im λ but a huge |λ| are not what a user asks for), then order by Im λ.
+    roots.sort_by(|p, q| p.norm().total_cmp(&q.norm()));
     roots.truncate(max_modes);
+    roots.sort_by(|p, q| p.im.total_cmp(&q.im));
     let ac = a.map(|x| Complex::new(x, 0.0));
     let mut modes = Vec::with_capacity(roots.len());
     for lambda in roots {

@@ -19,6 +19,8 @@ pub struct TimeSystem<'a> {
     /// The reduction, when used.
     pub reduced: Option<ReducedModel>,
     gravity: DVector<f64>,
+    /// Zero vector standing in for gravity when only the time-varying loads are wanted.
+    no_gravity: DVector<f64>,
     map: Vec<usize>,
 }
 
@@ -32,6 +34,7 @@ impl<'a> TimeSystem<'a> {
                 model,
                 reduced: None,
                 gravity: model.gravity_vector.clone(),
+                no_gravity: DVector::zeros(n),
                 map: (0..n).collect(),
             }),
             Some(k) => {
@@ -49,10 +52,12 @@ impl<'a> TimeSystem<'a> {
                 let gravity = red.transform.transpose() * &model.gravity_vector;
                 // Only loaded/bearing DOFs are ever looked up; others map to 0 harmlessly.
                 let map = (0..n).map(|d| red.reduced_index(d).unwrap_or(0)).collect();
+                let no_gravity = DVector::zeros(gravity.len());
                 Ok(TimeSystem {
                     model,
                     reduced: Some(red),
                     gravity,
+                    no_gravity,
                     map,
                 })
             }
@@ -96,7 +101,8 @@ impl<'a> TimeSystem<'a> {
         }
     }
 
-    /// Load vector at time t (s) and spin speed Ω (rad/s) into `f` (overwritten).
+    /// Time-varying load vector at time t (s) and spin speed Ω (rad/s) into `f` (overwritten):
+    /// everything but gravity, which is [`TimeSystem::constant_load`].
     pub fn load(
         &self,
         t: f64,
@@ -107,11 +113,27 @@ impl<'a> TimeSystem<'a> {
         self.model.description.loads.add_forces_mapped(
             t,
             spin_speed,
-            self.gravity.as_slice(),
+            self.no_gravity.as_slice(),
             true,
             &|d| self.map[d],
             f.as_mut_slice(),
         )
+    }
+
+    /// The constant (gravity) load in the integrated coordinates.
+    pub fn constant_load(&self) -> DVector<f64> {
+        let g: f64 = self
+            .model
+            .description
+            .loads
+            .loads
+            .iter()
+            .map(|l| match l {
+                super::loads::Load::Gravity { acceleration } => *acceleration,
+                _ => 0.0,
+            })
+            .sum();
+        &self.gravity * g
     }
 
     fn matrices(&self) -> (&DMatrix<f64>, &DMatrix<f64>, &DMatrix<f64>, &DMatrix<f64>) {
@@ -160,6 +182,7 @@ impl<'a> TimeSystem<'a> {
             bearings,
             newton,
             (t0, q0, v0),
+            self.constant_load(),
             f0,
         )
     }

@@ -53,6 +53,7 @@ fn integrator(
         NewtonSettings::default(),
         (0.0, q0, v0),
         DVector::zeros(model.n_dof()),
+        DVector::zeros(model.n_dof()),
     )
     .unwrap()
 }
@@ -206,6 +207,7 @@ fn newton_failure_is_reported() {
         ],
         NewtonSettings::default(),
         (0.0, DVector::zeros(n), DVector::zeros(n)),
+        DVector::zeros(n),
         DVector::zeros(n),
     )
     .unwrap();

@@ -1,0 +1,87 @@
+//! CSV output of a time response: the full record (probe displacements, velocities,
+//! accelerations; bearing forces, stiffness and roller diagnostics) and, per bearing, the
+//! recorded inner-race kinematics trace (time, displacement, velocity, spin speed) that a
+//! bearing-in-the-loop replay feeds to the core's bearing step.
+
+use std::io::Write;
+use std::path::Path;
+
+use super::simulate::RunResult;
+
+/// Writes the full record. Columns: `t_s`, then per probe node `n{k}_x_m, n{k}_y_m, n{k}_vx_m_s,
+/// n{k}_vy_m_s, n{k}_ax_m_s2, n{k}_ay_m_s2`, then per bearing `b{i}_fx_n, b{i}_fy_n,
+/// b{i}_kxx_n_per_m, b{i}_kxy_n_per_m, b{i}_kyx_n_per_m, b{i}_kyy_n_per_m,
+/// b{i}_max_contact_force_n, b{i}_max_contact_stiffness_n_per_m, b{i}_max_central_film_m`
+/// (the last three empty without roller data).
+pub fn write_run_csv(path: &Path, result: &RunResult) -> std::io::Result<()> {
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut header = vec!["t_s".to_string()];
+    for n in &result.probe_nodes {
+        for q in ["x_m", "y_m", "vx_m_s", "vy_m_s", "ax_m_s2", "ay_m_s2"] {
+            header.push(format!("n{n}_{q}"));
+        }
+    }
+    let n_bearings = result.samples.first().map_or(0, |s| s.bearings.len());
+    for b in 0..n_bearings {
+        for q in [
+            "fx_n",
+            "fy_n",
+            "kxx_n_per_m",
+            "kxy_n_per_m",
+            "kyx_n_per_m",
+            "kyy_n_per_m",
+            "max_contact_force_n",
+            "max_contact_stiffness_n_per_m",
+            "max_central_film_m",
+        ] {
+            header.push(format!("b{b}_{q}"));
+        }
+    }
+    writeln!(w, "{}", header.join(","))?;
+    for s in &result.samples {
+        let mut row = vec![format!("{:.9e}", s.time)];
+        for p in &s.probes {
+            for v in p.iter().flatten() {
+                row.push(format!("{v:.9e}"));
+            }
+        }
+        for r in &s.bearings {
+            row.push(format!("{:.9e}", r.force[0]));
+            row.push(format!("{:.9e}", r.force[1]));
+            for k in r.stiffness.iter().flatten() {
+                row.push(format!("{k:.9e}"));
+            }
+            match r.rollers {
+                Some(d) => {
+                    row.push(format!("{:.9e}", d.max_contact_force));
+                    row.push(format!("{:.9e}", d.max_contact_stiffness));
+                    row.push(format!("{:.9e}", d.max_central_film));
+                }
+                None => row.extend(["".to_string(), "".to_string(), "".to_string()]),
+            }
+        }
+        writeln!(w, "{}", row.join(","))?;
+    }
+    w.flush()
+}
+
+/// Writes the inner-race kinematics of bearing `bearing` (probe `probe`): columns `t_s, x_m,
+/// y_m, vx_m_s, vy_m_s, spin_rad_s`.
+pub fn write_kinematics_trace(
+    path: &Path,
+    result: &RunResult,
+    probe: usize,
+    spin_speed: f64,
+) -> std::io::Result<()> {
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+    writeln!(w, "t_s,x_m,y_m,vx_m_s,vy_m_s,spin_rad_s")?;
+    for s in &result.samples {
+        let p = s.probes[probe];
+        writeln!(
+            w,
+            "{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}",
+            s.time, p[0][0], p[0][1], p[1][0], p[1][1], spin_speed
+        )?;
+    }
+    w.flush()
+}
