@@ -5,7 +5,7 @@
 //! Outer races sit in a rigid housing, so the bearing acts on the x and y DOFs of its node only.
 //! Two implementations: [`LinearBearing`] (spring–damper, possibly anisotropic and cross-coupled;
 //! used for the textbook cases) and the nonlinear roller bearing of the no_std core, reached
-//! through [`roller_bearing`].
+//! through [`roller_bearing`] (adapter in [`super::roller_bearing`]).
 
 use std::path::{Path, PathBuf};
 
@@ -152,16 +152,13 @@ impl BearingSpec {
     }
 }
 
-/// Constructor hook for the core's roller bearing. Not wired yet: the adapter to
-/// `bearing_core` is written once the core's bearing step exists on `main`.
+/// Constructor hook for the core's roller bearing: the bearing TOML at `path` (see
+/// `crate::config`) with the given film model, through [`super::roller_bearing::RollerBearing`].
 pub fn roller_bearing(
     path: &Path,
     film: FilmChoice,
 ) -> Result<Box<dyn BearingModel>, BearingError> {
-    Err(BearingError(format!(
-        "roller bearings need the core adapter (bearing_core::bearing), which is not wired yet; \
-         cannot build {} with film {:?} — use kind = \"linear\" for now",
-        path.display(),
-        film
-    )))
+    Ok(Box::new(super::roller_bearing::RollerBearing::from_file(
+        path, film,
+    )?))
 }

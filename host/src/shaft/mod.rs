@@ -21,6 +21,7 @@ pub mod operating;
 pub mod output;
 pub mod plots;
 pub mod reduction;
+pub mod roller_bearing;
 pub mod simulate;
 pub mod spectrum;
 pub mod statics;

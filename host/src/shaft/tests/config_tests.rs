@@ -124,10 +124,10 @@ fn uncovered_elements_and_decreasing_nodes_are_refused() {
 }
 
 #[test]
-fn roller_bearing_path_is_relative_to_the_shaft_file_and_reports_the_missing_adapter() {
+fn roller_bearing_path_is_relative_to_the_shaft_file() {
     let text = GOOD.replace(
         "kind = \"linear\"\nstiffness_n_per_m = 1e6",
-        "kind = \"roller\"\nconfig = \"hub_motor.toml\"\nfilm = \"int\"",
+        "kind = \"roller\"\nconfig = \"hub_motor.toml\"\nfilm = \"regression\"",
     );
     let model = parse_model(Path::new("x/shaft.toml"), &text).unwrap();
     let spec = &model.description.bearings[0].spec;
@@ -138,5 +138,23 @@ fn roller_bearing_path_is_relative_to_the_shaft_file_and_reports_the_missing_ada
         other => panic!("{other:?}"),
     }
     let e = spec.build().err().unwrap().to_string();
-    assert!(e.contains("core adapter"), "{e}");
+    assert!(
+        e.contains("x/hub_motor.toml") && e.contains("cannot read"),
+        "{e}"
+    );
+}
+
+/// The bundled bearing file builds a core bearing with the regression film and dry; the
+/// networks the core does not have yet are refused with a message saying so.
+#[test]
+fn roller_bearing_films() {
+    use crate::shaft::bearing::{roller_bearing, FilmChoice};
+    let path = configs().join("hub_motor.toml");
+    assert!(roller_bearing(&path, FilmChoice::Regression).is_ok());
+    assert!(roller_bearing(&path, FilmChoice::Dry).is_ok());
+    let e = roller_bearing(&path, FilmChoice::Int)
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(e.contains("no film network"), "{e}");
 }

@@ -1,0 +1,118 @@
+//! Adapter from the core's film-coupled roller bearing (`bearing_core::Bearing::step`, through
+//! the host's run-time roller count `crate::rolling`) to the shaft's [`BearingModel`].
+//!
+//! The core works in f32 with the inner-race state and the cage angle; this adapter keeps the
+//! cage angle in f64, advancing it at the cage speed ω_c = (ω/2)(1 − D/d_m) (PHYSICS.md §2)
+//! between committed steps, so Newton iterations inside a step see the cage at the step's time.
+//! Tilts are not coupled (the shaft passes x, y only; the core gets zero tilt). The tangent
+//! stiffness is the core's radial 2×2 block (film coupling included), the damping the core's
+//! f_damp·K_j matrix. A state the core refuses is reported as an error, never used.
+
+use std::path::Path;
+
+use bearing_core::{OperatingState, Regression, StepStatus};
+
+use super::bearing::{
+    BearingError, BearingModel, BearingReaction, BearingState, FilmChoice, RollerDiagnostics,
+};
+use crate::config::BearingConfig;
+use crate::rolling::{new_bearing, DynBearing, StepSnapshot};
+
+/// The core roller bearing as a shaft bearing.
+pub struct RollerBearing {
+    bearing: Box<dyn DynBearing>,
+    film: FilmChoice,
+    /// ω_c / ω.
+    cage_ratio: f64,
+    /// Cage angle at `commit_time` (rad, in [0, 2π)).
+    cage_angle: f64,
+    commit_time: f64,
+}
+
+impl RollerBearing {
+    /// From a bearing configuration file (see `crate::config`) and a film model. The integer
+    /// and f32 networks are refused until the core provides them.
+    pub fn from_file(path: &Path, film: FilmChoice) -> Result<Self, BearingError> {
+        match film {
+            FilmChoice::Regression | FilmChoice::Dry => {}
+            FilmChoice::Int | FilmChoice::F32 => {
+                return Err(BearingError(format!(
+                    "film {:?} for {}: the core has no film network yet; use film = \"regression\" or \"dry\"",
+                    film,
+                    path.display()
+                )))
+            }
+        }
+        let (_, params) = BearingConfig::load(path).map_err(|e| BearingError(e.to_string()))?;
+        let geometry = *params.geometry();
+        let bearing =
+            new_bearing(params).map_err(|e| BearingError(format!("{}: {e}", path.display())))?;
+        let cage_ratio = f64::from(geometry.cage_speed_rad_s(1.0));
+        Ok(RollerBearing {
+            bearing,
+            film,
+            cage_ratio,
+            cage_angle: 0.0,
+            commit_time: 0.0,
+        })
+    }
+
+    fn cage_angle_at(&self, state: &BearingState) -> f64 {
+        let tau = std::f64::consts::TAU;
+        (self.cage_angle + self.cage_ratio * state.spin_speed * (state.time - self.commit_time))
+            .rem_euclid(tau)
+    }
+}
+
+fn diagnostics(s: &StepSnapshot) -> RollerDiagnostics {
+    let mut d = RollerDiagnostics::default();
+    for r in &s.rollers {
+        d.max_contact_force = d.max_contact_force.max(f64::from(r.load_n));
+        d.max_contact_stiffness = d
+            .max_contact_stiffness
+            .max(f64::from(r.contact_stiffness_n_per_m));
+        if r.load_n > 0.0 {
+            d.max_central_film = d
+                .max_central_film
+                .max(f64::from(r.central_film_in_m.max(r.central_film_out_m)));
+        }
+    }
+    d
+}
+
+impl BearingModel for RollerBearing {
+    fn evaluate(&mut self, state: &BearingState) -> Result<BearingReaction, BearingError> {
+        let f = |v: f64| v as f32;
+        let os = OperatingState {
+            displacement_m: state.displacement.map(f),
+            velocity_m_s: state.velocity.map(f),
+            tilt_rad: [0.0; 2],
+            shaft_speed_rad_s: f(state.spin_speed),
+            cage_angle_rad: f(self.cage_angle_at(state)),
+        };
+        let snap = match self.film {
+            FilmChoice::Dry => self.bearing.step_dry(&os),
+            _ => self.bearing.step(&Regression, &os),
+        };
+        if let StepStatus::Rejected(e) = snap.status {
+            return Err(BearingError(format!(
+                "the core refused the inner-race state u = {:?} m, v = {:?} m/s: {e}",
+                state.displacement, state.velocity
+            )));
+        }
+        let k = snap.radial_stiffness_n_per_m();
+        let c = snap.damping_n_s_per_m;
+        let g = |m: [[f32; 2]; 2]| m.map(|row| row.map(f64::from));
+        Ok(BearingReaction {
+            force: snap.force_n.map(f64::from),
+            stiffness: g(k),
+            damping: g(c),
+            rollers: Some(diagnostics(&snap)),
+        })
+    }
+
+    fn commit(&mut self, state: &BearingState, _dt: f64) {
+        self.cage_angle = self.cage_angle_at(state);
+        self.commit_time = state.time;
+    }
+}
