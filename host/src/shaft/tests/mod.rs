@@ -6,3 +6,4 @@ mod config_tests;
 mod element_tests;
 mod integrator_tests;
 mod modes_tests;
+mod response_tests;
