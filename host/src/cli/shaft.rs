@@ -392,6 +392,12 @@ fn cmd_run(a: RunArgs) -> Result<()> {
     for m in mesh_orders(&model) {
         markers.push((format!("mesh {m}×"), m * fs));
     }
+    for (i, b) in model.description.bearings.iter().enumerate() {
+        if let BearingSpec::Roller { config, .. } = &b.spec {
+            let f = bearing_host::shaft::roller_bearing::outer_race_pass_hz(config, omega)?;
+            markers.push((format!("outer-race pass, bearing {i}"), f));
+        }
+    }
     let spec_png = with_suffix(&a.out, "_spectrum.png");
     plots::spectrum(
         &spec,

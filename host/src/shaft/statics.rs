@@ -72,7 +72,7 @@ pub fn equilibrium(
     let dofs = model.bearing_dofs();
     let force_scale = load.amax().max(1.0);
     let mut q = DVector::zeros(n);
-    let max_iterations = 100;
+    let max_iterations = 200;
     let mut residual = f64::INFINITY;
     for iteration in 0..max_iterations {
         let mut k = model.stiffness.clone();
@@ -103,13 +103,24 @@ pub fn equilibrium(
                 iterations: iteration,
             });
         }
-        let dq = k
-            .lu()
-            .solve(&r)
-            .ok_or(StaticError::Singular { iteration })?;
-        if !dq.iter().all(|x| x.is_finite()) {
-            return Err(StaticError::Singular { iteration });
-        }
+        // An unloaded bearing without clearance (dry, at the centre) has no stiffness and the
+        // tangent is singular: retry with a small spring on the bearing DOFs (10⁻⁶ of the
+        // largest diagonal term). The residual still uses the true forces, so the equilibrium
+        // found is unchanged; only the path to it (limited by MAX_BEARING_STEP) differs.
+        let dq = match k.clone().lu().solve(&r) {
+            Some(dq) if dq.iter().all(|x| x.is_finite()) => dq,
+            _ => {
+                let eps = 1e-6 * k.diagonal().amax();
+                for d in &dofs {
+                    k[(d[0], d[0])] += eps;
+                    k[(d[1], d[1])] += eps;
+                }
+                k.lu()
+                    .solve(&r)
+                    .filter(|dq| dq.iter().all(|x| x.is_finite()))
+                    .ok_or(StaticError::Singular { iteration })?
+            }
+        };
         // Bearings with clearance or a film can be nearly unloaded at the start, so their
         // tangent is soft and a full Newton step can fly far out: limit the bearing-DOF move
         // to MAX_BEARING_STEP per iteration (the rest of the shaft follows proportionally).

@@ -7,3 +7,4 @@ mod element_tests;
 mod integrator_tests;
 mod modes_tests;
 mod response_tests;
+mod rig_tests;
