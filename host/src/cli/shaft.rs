@@ -412,6 +412,7 @@ fn cmd_run(a: RunArgs) -> Result<()> {
         "wall_seconds": r.wall_seconds, "bearing_seconds": r.bearing_seconds,
         "real_time_factor": simulated / r.wall_seconds,
         "max_newton_iterations": r.max_newton_iterations, "steadiness": r.steadiness,
+        "resolution_limited_steps": r.resolution_limited_steps,
         "envelope": r.envelope, "csv": csv,
     });
     if a.model.json {

@@ -66,6 +66,12 @@ pub struct NewtonSettings {
     pub displacement_tolerance: f64,
     /// …or below this fraction of the bearing displacement.
     pub relative_tolerance: f64,
+    /// Resolution of the bearing model: a model computed in f32 with a fixed number of inner
+    /// iterations (the core) returns forces that scatter slightly between calls, so Newton can
+    /// stall just above the tolerance. After 3 iterations a correction below this bound (m)
+    /// that no longer halves is accepted as converged to the model's resolution; such steps
+    /// are counted in [`StepStats::resolution_limited`] and reported, never hidden.
+    pub model_resolution: f64,
 }
 
 impl Default for NewtonSettings {
@@ -77,6 +83,7 @@ impl Default for NewtonSettings {
             // core's f32 forces mapped through S (≈ 10⁻⁹ m/N × 4·10⁻³ N ≈ 4·10⁻¹² m).
             displacement_tolerance: 1e-11,
             relative_tolerance: 1e-6,
+            model_resolution: 1e-9,
         }
     }
 }
@@ -126,6 +133,8 @@ pub struct StepStats {
     pub iterations: usize,
     /// Bearing evaluations of the last step.
     pub bearing_evaluations: usize,
+    /// The last step converged to the bearing model's resolution, not to the tolerance.
+    pub resolution_limited: bool,
 }
 
 /// The state of the rotor: displacements, velocities, accelerations at time `time`.
@@ -413,6 +422,7 @@ impl Integrator {
         self.stats = StepStats::default();
         let mut converged = nb == 0;
         let mut correction = 0.0;
+        let mut previous = f64::INFINITY;
         let mut w = [0.0; 2 * MAX_BEARINGS];
         while !converged {
             for i in 0..m {
@@ -466,6 +476,15 @@ impl Integrator {
             }
             converged =
                 size <= self.newton.displacement_tolerance + self.newton.relative_tolerance * scale;
+            if !converged
+                && self.stats.iterations >= 3
+                && size <= self.newton.model_resolution
+                && size > 0.5 * previous
+            {
+                converged = true;
+                self.stats.resolution_limited = true;
+            }
+            previous = size;
         }
         // The forces of the last evaluation are used: they were taken at u − Δu with Δu within
         // the tolerance, so q₁ below is consistent with them to that tolerance.

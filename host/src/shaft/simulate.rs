@@ -102,6 +102,9 @@ pub struct RunResult {
     pub bearing_seconds: f64,
     /// Largest Newton iteration count of any step.
     pub max_newton_iterations: usize,
+    /// Steps whose Newton converged only to the bearing model's resolution
+    /// (see `NewtonSettings::model_resolution`).
+    pub resolution_limited_steps: usize,
 }
 
 fn stiffness_measure(k: &[[f64; 2]; 2]) -> f64 {
@@ -202,6 +205,7 @@ pub fn run(
     let mut samples = Vec::new();
     let mut halves = [Envelope::empty(), Envelope::empty()];
     let mut max_iter = 0;
+    let mut limited = 0;
     let clock = std::time::Instant::now();
     for step in 0..settle_steps + record_steps {
         let t1 = it.state.time + settings.dt;
@@ -210,6 +214,7 @@ pub fn run(
             .map_err(|e| StepError::Load(e.to_string()))?;
         it.step(&f)?;
         max_iter = max_iter.max(it.stats.iterations);
+        limited += usize::from(it.stats.resolution_limited);
         if step < settle_steps {
             continue;
         }
@@ -281,5 +286,6 @@ pub fn run(
         wall_seconds,
         bearing_seconds: it.bearing_seconds,
         max_newton_iterations: max_iter,
+        resolution_limited_steps: limited,
     })
 }

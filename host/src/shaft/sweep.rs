@@ -36,6 +36,8 @@ pub struct SweepPoint {
     pub wall_seconds: f64,
     /// Simulated time per run (s).
     pub simulated_seconds: f64,
+    /// Steps converged only to the bearing model's resolution (lubricated, dry).
+    pub resolution_limited_steps: [usize; 2],
 }
 
 /// Runs the sweep. `lubricated_film` replaces the film of every roller bearing on the lubricated
@@ -73,6 +75,10 @@ pub fn sweep(
                 steadiness: [lub.steadiness, dr.steadiness],
                 wall_seconds: lub.wall_seconds + dr.wall_seconds,
                 simulated_seconds: settings.settle_time + settings.record_time,
+                resolution_limited_steps: [
+                    lub.resolution_limited_steps,
+                    dr.resolution_limited_steps,
+                ],
             })
         })
         .collect()
