@@ -138,6 +138,9 @@ struct RunArgs {
     /// <prefix>_spectrum.png.
     #[arg(long, default_value = "shaft_run")]
     out: PathBuf,
+    /// With --reduce: also run the full model and report the envelope differences.
+    #[arg(long)]
+    compare_full: bool,
 }
 
 #[derive(Args, Debug)]
@@ -407,13 +410,17 @@ fn cmd_run(a: RunArgs) -> Result<()> {
     )
     .map_err(|e| anyhow::anyhow!("writing {}: {e}", spec_png.display()))?;
     let simulated = s.settle_time + s.record_time;
+    let reduction = match s.reduction_modes {
+        None => serde_json::Value::Null,
+        Some(k) => reduction_report(&model, &s, k, a.compare_full, &r)?,
+    };
     let summary = serde_json::json!({
         "speed_rpm": a.speed_rpm, "dt_s": s.dt, "steps": r.steps, "n_dof": r.n_dof,
         "wall_seconds": r.wall_seconds, "bearing_seconds": r.bearing_seconds,
         "real_time_factor": simulated / r.wall_seconds,
         "max_newton_iterations": r.max_newton_iterations, "steadiness": r.steadiness,
         "resolution_limited_steps": r.resolution_limited_steps,
-        "envelope": r.envelope, "csv": csv,
+        "envelope": r.envelope, "csv": csv, "reduction": reduction,
     });
     if a.model.json {
         println!("{summary}");
@@ -422,6 +429,54 @@ fn cmd_run(a: RunArgs) -> Result<()> {
         println!("plots: {}, {}", orbit_png.display(), spec_png.display());
     }
     Ok(())
+}
+
+/// Error of the Craig–Bampton model against the full one: the lowest natural frequencies with
+/// the bearings linearised at the equilibrium and, with `compare_full`, the run envelopes.
+fn reduction_report(
+    model: &RotorModel,
+    s: &RunSettings,
+    modes: usize,
+    compare_full: bool,
+    reduced_run: &bearing_host::shaft::simulate::RunResult,
+) -> Result<serde_json::Value> {
+    use bearing_host::shaft::operating::{build_bearings, linearise};
+    let mut bearings = build_bearings(model)?;
+    let eq = bearing_host::shaft::statics::equilibrium(model, s.spin_speed, &mut bearings)?;
+    let kb: Vec<_> = linearise(model, &mut bearings, &eq.q, s.spin_speed)?
+        .iter()
+        .map(|r| r.stiffness)
+        .collect();
+    let system = bearing_host::shaft::system::TimeSystem::new(model, Some(modes))?;
+    let reduced = system.reduced.as_ref().context("reduced model")?;
+    let errors = bearing_host::shaft::reduction::frequency_error(model, reduced, &kb, 6)?;
+    let freq: Vec<_> = errors
+        .iter()
+        .map(|(w, e)| serde_json::json!({"full_rad_s": w, "relative_error": e}))
+        .collect();
+    let envelope = if compare_full {
+        let full = run_time(
+            model,
+            &RunSettings {
+                reduction_modes: None,
+                ..s.clone()
+            },
+            None,
+        )?;
+        let rel = |a: f64, b: f64| (a - b) / b;
+        serde_json::json!({
+            "max_displacement_relative_error": rel(reduced_run.envelope.max_displacement_m, full.envelope.max_displacement_m),
+            "max_acceleration_relative_error": rel(reduced_run.envelope.max_acceleration_m_s2, full.envelope.max_acceleration_m_s2),
+            "max_bearing_force_relative_error": rel(reduced_run.envelope.max_bearing_force_n, full.envelope.max_bearing_force_n),
+            "full_wall_seconds": full.wall_seconds,
+        })
+    } else {
+        serde_json::Value::Null
+    };
+    Ok(
+        serde_json::json!({"modes_kept": modes, "n_dof_full": model.n_dof(),
+        "frequencies": freq, "envelope_vs_full": envelope}),
+    )
 }
 
 fn cmd_sweep(a: SweepArgs) -> Result<()> {
