@@ -51,6 +51,10 @@ struct ModelArgs {
     /// Damping of the replacement linear bearings (N·s/m, ≥ 0).
     #[arg(long, default_value_t = 0.0)]
     linear_damping: f64,
+    /// Film model of every roller bearing (overrides the file; `sweep` runs this film against
+    /// dry, so it must not be `dry` there).
+    #[arg(long, value_enum)]
+    film: Option<FilmArg>,
     /// Print JSON instead of a table.
     #[arg(long)]
     json: bool,
@@ -152,9 +156,6 @@ struct SweepArgs {
     /// Speeds (rpm, comma separated); default the PHYSICS.md §6.2 list.
     #[arg(long, value_delimiter = ',')]
     speeds_rpm: Option<Vec<f64>>,
-    /// Film model of the lubricated side (default: each bearing's configured film).
-    #[arg(long, value_enum)]
-    film: Option<FilmArg>,
     /// Envelope plot.
     #[arg(long, default_value = "shaft_sweep.png")]
     plot: PathBuf,
@@ -165,6 +166,18 @@ enum FilmArg {
     Int,
     F32,
     Regression,
+    Dry,
+}
+
+impl FilmArg {
+    fn choice(self) -> FilmChoice {
+        match self {
+            FilmArg::Int => FilmChoice::Int,
+            FilmArg::F32 => FilmChoice::F32,
+            FilmArg::Regression => FilmChoice::Regression,
+            FilmArg::Dry => FilmChoice::Dry,
+        }
+    }
 }
 
 /// Runs `bearing shaft …`.
@@ -201,6 +214,11 @@ fn rpm_to_rad(rpm: f64) -> f64 {
 
 fn load(m: &ModelArgs) -> Result<RotorModel> {
     let mut model = load_model(&m.config)?;
+    if let Some(film) = m.film {
+        for b in &mut model.description.bearings {
+            b.spec = b.spec.with_film(film.choice());
+        }
+    }
     if let Some(k) = m.linear_bearings {
         let k = check("linear-bearings", k, 0.0, 1e13, true)?;
         let c = check("linear-damping", m.linear_damping, 0.0, 1e9, false)?;
@@ -494,11 +512,17 @@ fn cmd_sweep(a: SweepArgs) -> Result<()> {
     // Validate the time settings once (at the top speed) so a bad flag fails before the runs.
     let top = speeds.iter().copied().fold(0.0, f64::max);
     settings(&model, &a.time, rpm_to_rad(top))?;
-    let film = a.film.map(|f| match f {
-        FilmArg::Int => FilmChoice::Int,
-        FilmArg::F32 => FilmChoice::F32,
-        FilmArg::Regression => FilmChoice::Regression,
-    });
+    if model.description.bearings.iter().any(|b| {
+        matches!(
+            b.spec,
+            BearingSpec::Roller {
+                film: FilmChoice::Dry,
+                ..
+            }
+        )
+    }) {
+        bail!("--film / the shaft file give dry bearings: sweep runs the lubricated film against dry, choose a film");
+    }
     let bar = indicatif::ProgressBar::new(2 * speeds.len() as u64);
     bar.set_style(indicatif::ProgressStyle::with_template(
         "{bar:40} {pos}/{len} runs, {elapsed} (eta {eta})",
@@ -509,7 +533,7 @@ fn cmd_sweep(a: SweepArgs) -> Result<()> {
     let done = AtomicUsize::new(0);
     let time = &a.time;
     let settings_at = |omega: f64| settings(&model, time, omega).expect("validated above");
-    let points = sweep(&model, &speeds, &settings_at, film, &|| {
+    let points = sweep(&model, &speeds, &settings_at, None, &|| {
         done.fetch_add(1, Ordering::Relaxed);
         bar.inc(1);
     })?;
