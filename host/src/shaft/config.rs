@@ -444,8 +444,13 @@ fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescription, ConfigE
                 format!("{inner} m must be below the outer diameter {outer} m"),
             ));
         }
-        for e in s.from_node..s.to_node {
-            if element_diameters[e].is_some() {
+        for (e, slot) in element_diameters
+            .iter_mut()
+            .enumerate()
+            .take(s.to_node)
+            .skip(s.from_node)
+        {
+            if slot.is_some() {
                 return Err(loc.err(
                     "section",
                     i,
@@ -456,7 +461,7 @@ fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescription, ConfigE
                     ),
                 ));
             }
-            element_diameters[e] = Some((outer, inner));
+            *slot = Some((outer, inner));
         }
     }
     let element_diameters = element_diameters

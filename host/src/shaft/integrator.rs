@@ -203,12 +203,14 @@ fn solve_small(
         }
         a.swap(col, pivot);
         b.swap(col, pivot);
-        for row in col + 1..n {
-            let f = a[row][col] / a[col][col];
-            for k in col..n {
-                a[row][k] -= f * a[col][k];
+        let pivot_row = a[col];
+        let pivot_b = b[col];
+        for (row, b_row) in a.iter_mut().zip(b.iter_mut()).take(n).skip(col + 1) {
+            let f = row[col] / pivot_row[col];
+            for (x, p) in row.iter_mut().zip(pivot_row.iter()).take(n).skip(col) {
+                *x -= f * p;
             }
-            b[row] -= f * b[col];
+            *b_row -= f * pivot_b;
         }
     }
     for col in (0..n).rev() {
