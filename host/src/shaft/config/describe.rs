@@ -1,349 +1,19 @@
-//! The shaft model file (TOML): nodes, shaft sections with stepped diameters, material, damping,
-//! disks, bearings, motor and loads. Parsed with serde; every semantic check names the file, the
-//! line and the field, and says what is allowed.
-//!
-//! ```toml
-//! nodes_m = [0.0, 0.25, 0.5]                       # axial node positions, increasing
-//! [material]
-//! youngs_modulus_pa = 211e9
-//! shear_modulus_pa = 81.2e9
-//! density_kg_m3 = 7810.0
-//! [damping]                                         # optional Rayleigh damping C = aM + bK
-//! mass_proportional_per_s = 0.0
-//! stiffness_proportional_s = 1e-5
-//! [[section]]                                       # elements from_node..to_node
-//! from_node = 0
-//! to_node = 2
-//! outer_diameter_m = 0.05
-//! inner_diameter_m = 0.0                            # optional
-//! [[disk]]                                          # annulus (or mass_kg + inertias)
-//! node = 1
-//! outer_diameter_m = 0.28
-//! inner_diameter_m = 0.05
-//! thickness_m = 0.07
-//! [[bearing]]
-//! node = 0
-//! kind = "linear"                                   # or "roller": config = "x.toml", film = "int"
-//! stiffness_n_per_m = 1e6
-//! [motor]                                           # needed by gear_mesh loads
-//! peak_torque_nm = 68.0
-//! max_power_w = 54000.0
-//! max_speed_rpm = 21000.0
-//! [[load]]
-//! kind = "gear_mesh"                                # static | gravity | unbalance | gear_mesh
-//! node = 1
-//! teeth = 17
-//! module_m = 0.004
-//! pressure_angle_deg = 20.0
-//! ```
+//! Turning the parsed shaft file into a checked [`RotorDescription`]: every value range-checked,
+//! every node reference resolved, sections covering each element exactly once.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-use serde::Deserialize;
+use super::locator::Locator;
+use super::{ConfigError, ShaftFile};
+use crate::shaft::bearing::{BearingSpec, LinearBearing};
+use crate::shaft::damping::ProportionalDamping;
+use crate::shaft::disk::RigidDisk;
+use crate::shaft::element::Material;
+use crate::shaft::loads::{GearMesh, Load, LoadSet};
+use crate::shaft::model::{BearingSite, RotorDescription};
+use crate::shaft::motor::Pmsm;
 
-use super::bearing::{BearingSpec, FilmChoice, LinearBearing};
-use super::damping::ProportionalDamping;
-use super::disk::RigidDisk;
-use super::element::Material;
-use super::loads::{GearMesh, Load, LoadSet};
-use super::model::{BearingSite, RotorDescription, RotorModel};
-use super::motor::Pmsm;
-
-/// A configuration error with its location.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{}{}: {field}: {message}", file.display(), line.map(|l| format!(":{l}")).unwrap_or_default())]
-pub struct ConfigError {
-    /// The file.
-    pub file: PathBuf,
-    /// 1-based line, when known.
-    pub line: Option<usize>,
-    /// The field (TOML key path).
-    pub field: String,
-    /// What is wrong and what is allowed.
-    pub message: String,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileMaterial {
-    youngs_modulus_pa: f64,
-    shear_modulus_pa: f64,
-    density_kg_m3: f64,
-}
-
-#[derive(Debug, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-struct FileDamping {
-    #[serde(default)]
-    mass_proportional_per_s: f64,
-    #[serde(default)]
-    stiffness_proportional_s: f64,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileSection {
-    from_node: usize,
-    to_node: usize,
-    outer_diameter_m: f64,
-    #[serde(default)]
-    inner_diameter_m: f64,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileDisk {
-    node: usize,
-    outer_diameter_m: Option<f64>,
-    #[serde(default)]
-    inner_diameter_m: f64,
-    thickness_m: Option<f64>,
-    density_kg_m3: Option<f64>,
-    mass_kg: Option<f64>,
-    polar_inertia_kg_m2: Option<f64>,
-    diametral_inertia_kg_m2: Option<f64>,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileBearing {
-    node: usize,
-    kind: String,
-    stiffness_n_per_m: Option<f64>,
-    damping_n_s_per_m: Option<f64>,
-    kxx_n_per_m: Option<f64>,
-    kyy_n_per_m: Option<f64>,
-    kxy_n_per_m: Option<f64>,
-    kyx_n_per_m: Option<f64>,
-    cxx_n_s_per_m: Option<f64>,
-    cyy_n_s_per_m: Option<f64>,
-    config: Option<String>,
-    film: Option<FilmChoice>,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileMotor {
-    peak_torque_nm: f64,
-    max_power_w: f64,
-    max_speed_rpm: f64,
-    #[serde(default = "one")]
-    load_fraction: f64,
-    #[serde(default)]
-    ripple_fraction: f64,
-    ripple_order: Option<f64>,
-}
-
-fn one() -> f64 {
-    1.0
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileLoad {
-    kind: String,
-    node: Option<usize>,
-    fx_n: Option<f64>,
-    fy_n: Option<f64>,
-    acceleration_m_s2: Option<f64>,
-    mass_eccentricity_kg_m: Option<f64>,
-    phase_deg: Option<f64>,
-    teeth: Option<u32>,
-    module_m: Option<f64>,
-    pressure_angle_deg: Option<f64>,
-    face_width_m: Option<f64>,
-    mesh_angle_deg: Option<f64>,
-    force_fluctuation: Option<f64>,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ShaftFile {
-    #[serde(default)]
-    description: String,
-    nodes_m: Vec<f64>,
-    material: FileMaterial,
-    #[serde(default)]
-    damping: FileDamping,
-    #[serde(default)]
-    section: Vec<FileSection>,
-    #[serde(default)]
-    disk: Vec<FileDisk>,
-    #[serde(default)]
-    bearing: Vec<FileBearing>,
-    motor: Option<FileMotor>,
-    #[serde(default)]
-    load: Vec<FileLoad>,
-}
-
-/// Source text plus path, to turn (table, index, key) into a line number.
-struct Locator<'a> {
-    file: &'a Path,
-    text: &'a str,
-}
-
-impl Locator<'_> {
-    /// Line of `key` inside the `index`-th `[[table]]` (or `[table]`, or the top level when
-    /// `table` is empty).
-    fn line(&self, table: &str, index: usize, key: &str) -> Option<usize> {
-        let lines: Vec<&str> = self.text.lines().collect();
-        let mut start = 0usize;
-        if !table.is_empty() {
-            let headers = [format!("[[{table}]]"), format!("[{table}]")];
-            let mut seen = 0usize;
-            let mut found = None;
-            for (i, l) in lines.iter().enumerate() {
-                let t = l.trim();
-                if headers.iter().any(|h| t.starts_with(h.as_str())) {
-                    if seen == index {
-                        found = Some(i);
-                        break;
-                    }
-                    seen += 1;
-                }
-            }
-            start = found?;
-        }
-        for (i, l) in lines.iter().enumerate().skip(start) {
-            let t = l.trim_start();
-            if i > start && t.starts_with('[') {
-                break;
-            }
-            if let Some(rest) = t.strip_prefix(key) {
-                if rest.trim_start().starts_with('=') {
-                    return Some(i + 1);
-                }
-            }
-        }
-        if table.is_empty() {
-            None
-        } else {
-            Some(start + 1)
-        }
-    }
-
-    fn err(&self, table: &str, index: usize, key: &str, message: String) -> ConfigError {
-        let field = match table {
-            "" => key.to_string(),
-            "material" | "damping" | "motor" => format!("{table}.{key}"),
-            _ => format!("{table}[{index}].{key}"),
-        };
-        ConfigError {
-            file: self.file.to_path_buf(),
-            line: self.line(table, index, key),
-            field,
-            message,
-        }
-    }
-
-    /// A finite value in [lo, hi] (inclusive unless `open_lo`).
-    #[allow(clippy::too_many_arguments)]
-    fn range(
-        &self,
-        table: &str,
-        index: usize,
-        key: &str,
-        value: f64,
-        lo: f64,
-        hi: f64,
-        open_lo: bool,
-        unit: &str,
-    ) -> Result<f64, ConfigError> {
-        let ok = value.is_finite() && value <= hi && if open_lo { value > lo } else { value >= lo };
-        if ok {
-            Ok(value)
-        } else {
-            let bracket = if open_lo { "(" } else { "[" };
-            Err(self.err(
-                table,
-                index,
-                key,
-                format!(
-                    "{value} is not allowed: must be finite and in {bracket}{lo}, {hi}] {unit}"
-                ),
-            ))
-        }
-    }
-
-    fn positive(&self, t: &str, i: usize, k: &str, v: f64, unit: &str) -> Result<f64, ConfigError> {
-        self.range(t, i, k, v, 0.0, f64::MAX, true, unit)
-    }
-
-    fn non_negative(
-        &self,
-        t: &str,
-        i: usize,
-        k: &str,
-        v: f64,
-        unit: &str,
-    ) -> Result<f64, ConfigError> {
-        self.range(t, i, k, v, 0.0, f64::MAX, false, unit)
-    }
-
-    fn finite(&self, t: &str, i: usize, k: &str, v: f64, unit: &str) -> Result<f64, ConfigError> {
-        self.range(t, i, k, v, -f64::MAX, f64::MAX, false, unit)
-    }
-
-    fn node(&self, t: &str, i: usize, node: usize, n_nodes: usize) -> Result<usize, ConfigError> {
-        if node < n_nodes {
-            Ok(node)
-        } else {
-            Err(self.err(
-                t,
-                i,
-                "node",
-                format!("node {node} does not exist: allowed 0 … {}", n_nodes - 1),
-            ))
-        }
-    }
-
-    fn required<T: Copy>(
-        &self,
-        t: &str,
-        i: usize,
-        k: &str,
-        v: Option<T>,
-        why: &str,
-    ) -> Result<T, ConfigError> {
-        v.ok_or_else(|| self.err(t, i, k, format!("missing: required {why}")))
-    }
-}
-
-/// Reads and checks a shaft file and assembles the model.
-pub fn load_model(path: &Path) -> Result<RotorModel, ConfigError> {
-    let text = std::fs::read_to_string(path).map_err(|e| ConfigError {
-        file: path.to_path_buf(),
-        line: None,
-        field: "(file)".into(),
-        message: format!("cannot read: {e}"),
-    })?;
-    parse_model(path, &text)
-}
-
-/// Parses shaft-file text (`path` names it in errors and resolves relative bearing configs).
-pub fn parse_model(path: &Path, text: &str) -> Result<RotorModel, ConfigError> {
-    let file: ShaftFile = toml::from_str(text).map_err(|e| {
-        let line = e
-            .span()
-            .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1);
-        // The key on that line, for the message.
-        let field = line
-            .and_then(|l| text.lines().nth(l - 1))
-            .and_then(|l| l.split('=').next())
-            .map(|k| k.trim().to_string())
-            .unwrap_or_else(|| "(syntax)".into());
-        ConfigError {
-            file: path.to_path_buf(),
-            line,
-            field,
-            message: e.message().to_string(),
-        }
-    })?;
-    let loc = Locator { file: path, text };
-    describe(&loc, file).map(RotorModel::assemble)
-}
-
-fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescription, ConfigError> {
+pub(super) fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescription, ConfigError> {
     let _ = f.description;
     let n_nodes = f.nodes_m.len();
     if n_nodes < 2 {
@@ -656,6 +326,18 @@ fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescription, ConfigE
         bearings.push(BearingSite { node, spec });
     }
 
+    if bearings.len() > crate::shaft::integrator::MAX_BEARINGS {
+        return Err(loc.err(
+            "bearing",
+            crate::shaft::integrator::MAX_BEARINGS,
+            "node",
+            format!(
+                "{} bearings: at most {} are supported",
+                bearings.len(),
+                crate::shaft::integrator::MAX_BEARINGS
+            ),
+        ));
+    }
     let motor = match &f.motor {
         None => None,
         Some(m) => Some(Pmsm {
