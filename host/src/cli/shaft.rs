@@ -79,6 +79,9 @@ struct ModesArgs {
     /// Number of modes (1 … 200).
     #[arg(long, default_value_t = 8)]
     modes: usize,
+    /// Also plot the mode shapes to this PNG.
+    #[arg(long)]
+    plot: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -281,6 +284,10 @@ fn cmd_modes(a: ModesArgs) -> Result<()> {
     let omega = rpm_to_rad(check("speed-rpm", a.speed_rpm, 0.0, 1e6, false)?);
     let n = check_count("modes", a.modes, 1, 200)?;
     let (_, modes) = operating_modes(&model, omega, n, true)?;
+    if let Some(p) = &a.plot {
+        plots::mode_shapes(&model.description.node_positions, &modes, p)
+            .map_err(|e| anyhow::anyhow!("writing {}: {e}", p.display()))?;
+    }
     if a.model.json {
         let f: Vec<f64> = modes.iter().map(|m| m.frequency).collect();
         println!("{}", serde_json::json!({"frequencies_rad_s": f}));

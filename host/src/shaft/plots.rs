@@ -233,3 +233,49 @@ pub fn envelopes(points: &[SweepPoint], path: &Path) -> PlotResult {
     root.present()?;
     Ok(())
 }
+
+/// Mode shapes: orbit size √(|X|² + |Y|²) of each node (normalised) against the axial position,
+/// one line per mode, labelled with frequency and whirl.
+pub fn mode_shapes(positions: &[f64], modes: &[super::modes::Mode], path: &Path) -> PlotResult {
+    let root = BitMapBackend::new(path, (1000, 600)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (z0, z1) = range_of(positions.iter().map(|z| z * 1e3));
+    let mut chart = ChartBuilder::on(&root)
+        .caption("Mode shapes (orbit size)", ("sans-serif", 24))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d(z0..z1, 0.0..1.05)?;
+    chart
+        .configure_mesh()
+        .x_desc("axial position (mm)")
+        .y_desc("relative amplitude")
+        .draw()?;
+    for (i, m) in modes.iter().enumerate() {
+        let size: Vec<f64> = m
+            .shape
+            .chunks(4)
+            .map(|n| (n[0].norm_sqr() + n[1].norm_sqr()).sqrt())
+            .collect();
+        let big = size.iter().copied().fold(1e-300, f64::max);
+        let color = Palette99::pick(i).to_rgba();
+        chart
+            .draw_series(LineSeries::new(
+                positions.iter().zip(&size).map(|(z, a)| (z * 1e3, a / big)),
+                color.stroke_width(2),
+            ))?
+            .label(format!(
+                "{:.1} Hz {:?}",
+                m.frequency / (2.0 * std::f64::consts::PI),
+                m.whirl
+            ))
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
