@@ -556,6 +556,8 @@ fn cmd_sweep(a: SweepArgs) -> Result<()> {
             "max_central_film_m": points.iter().map(|p| e(p).max_central_film_m).collect::<Vec<_>>(),
             "max_displacement_m": points.iter().map(|p| e(p).max_displacement_m).collect::<Vec<_>>(),
             "max_acceleration_m_s2": points.iter().map(|p| e(p).max_acceleration_m_s2).collect::<Vec<_>>(),
+            "steadiness": points.iter().map(|p| p.steadiness[usize::from(!lub)]).collect::<Vec<_>>(),
+            "resolution_limited_steps": points.iter().map(|p| p.resolution_limited_steps[usize::from(!lub)]).collect::<Vec<_>>(),
         })
     };
     if a.model.json {
