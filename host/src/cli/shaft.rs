@@ -403,6 +403,8 @@ fn cmd_run(a: RunArgs) -> Result<()> {
         let p = with_suffix(&a.out, &format!("_b{b}_kinematics.csv"));
         output::write_kinematics_trace(&p, &r, b, omega)
             .with_context(|| format!("writing {}", p.display()))?;
+        let p = with_suffix(&a.out, &format!("_b{b}_rollers.csv"));
+        output::write_roller_csv(&p, &r, b).with_context(|| format!("writing {}", p.display()))?;
     }
     // Plots for the first bearing (inner race): orbit and spectrum of y.
     let orbit: Vec<[f64; 2]> = r.samples.iter().map(|s| s.probes[0][0]).collect();

@@ -33,6 +33,19 @@ pub struct RollerDiagnostics {
     pub max_central_film: f64,
 }
 
+/// State of one roller at the last evaluation (roller models only).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RollerState {
+    /// Roller angle θ_j from the x axis (rad).
+    pub angle: f64,
+    /// Roller contact load Q_j (N).
+    pub load: f64,
+    /// Central film at the inner contact (m).
+    pub central_film_inner: f64,
+    /// Central film at the outer contact (m).
+    pub central_film_outer: f64,
+}
+
 /// Reaction of the bearing on the shaft.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BearingReaction {
@@ -57,6 +70,10 @@ pub trait BearingModel: Send {
     fn evaluate(&mut self, state: &BearingState) -> Result<BearingReaction, BearingError>;
     /// Called once per accepted time step (lets a model advance its cage angle / warm start).
     fn commit(&mut self, state: &BearingState, dt: f64);
+    /// Per-roller states of the last evaluation (None for models without rollers).
+    fn roller_states(&self) -> Option<Vec<RollerState>> {
+        None
+    }
 }
 
 /// Linear spring–damper bearing: F = −K·u − C·u̇ with constant 2×2 K and C.

@@ -335,6 +335,11 @@ impl Integrator {
         Ok(me)
     }
 
+    /// The bearing models (e.g. for their per-roller states after a step).
+    pub fn bearing_models(&self) -> &[Box<dyn BearingModel>] {
+        &self.bearings
+    }
+
     /// Step size (s).
     pub fn dt(&self) -> f64 {
         self.dt

@@ -85,3 +85,32 @@ pub fn write_kinematics_trace(
     }
     w.flush()
 }
+
+/// Writes the per-roller record of bearing `bearing` when its model has rollers: columns `t_s`,
+/// then per roller j `r{j}_angle_rad, r{j}_load_n, r{j}_film_in_m, r{j}_film_out_m`.
+/// Returns false (and writes nothing) for a model without rollers.
+pub fn write_roller_csv(path: &Path, result: &RunResult, bearing: usize) -> std::io::Result<bool> {
+    let Some(Some(first)) = result.samples.first().map(|s| &s.rollers[bearing]) else {
+        return Ok(false);
+    };
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut header = vec!["t_s".to_string()];
+    for j in 0..first.len() {
+        for q in ["angle_rad", "load_n", "film_in_m", "film_out_m"] {
+            header.push(format!("r{j}_{q}"));
+        }
+    }
+    writeln!(w, "{}", header.join(","))?;
+    for s in &result.samples {
+        let mut row = vec![format!("{:.9e}", s.time)];
+        for r in s.rollers[bearing].iter().flatten() {
+            row.push(format!("{:.6e}", r.angle));
+            row.push(format!("{:.6e}", r.load));
+            row.push(format!("{:.6e}", r.central_film_inner));
+            row.push(format!("{:.6e}", r.central_film_outer));
+        }
+        writeln!(w, "{}", row.join(","))?;
+    }
+    w.flush()?;
+    Ok(true)
+}

@@ -14,6 +14,7 @@ use bearing_core::{OperatingState, Regression, StepStatus};
 
 use super::bearing::{
     BearingError, BearingModel, BearingReaction, BearingState, FilmChoice, RollerDiagnostics,
+    RollerState,
 };
 use crate::config::BearingConfig;
 use crate::rolling::{new_bearing, DynBearing, StepSnapshot};
@@ -27,6 +28,7 @@ pub struct RollerBearing {
     /// Cage angle at `commit_time` (rad, in [0, 2π)).
     cage_angle: f64,
     commit_time: f64,
+    last_rollers: Vec<RollerState>,
 }
 
 impl RollerBearing {
@@ -54,6 +56,7 @@ impl RollerBearing {
             cage_ratio,
             cage_angle: 0.0,
             commit_time: 0.0,
+            last_rollers: Vec::new(),
         })
     }
 
@@ -100,6 +103,14 @@ impl BearingModel for RollerBearing {
                 state.displacement, state.velocity
             )));
         }
+        self.last_rollers.clear();
+        self.last_rollers
+            .extend(snap.rollers.iter().map(|r| RollerState {
+                angle: f64::from(r.angle_rad),
+                load: f64::from(r.load_n),
+                central_film_inner: f64::from(r.central_film_in_m),
+                central_film_outer: f64::from(r.central_film_out_m),
+            }));
         let k = snap.radial_stiffness_n_per_m();
         let c = snap.damping_n_s_per_m;
         let g = |m: [[f32; 2]; 2]| m.map(|row| row.map(f64::from));
@@ -114,6 +125,10 @@ impl BearingModel for RollerBearing {
     fn commit(&mut self, state: &BearingState, _dt: f64) {
         self.cage_angle = self.cage_angle_at(state);
         self.commit_time = state.time;
+    }
+
+    fn roller_states(&self) -> Option<Vec<RollerState>> {
+        Some(self.last_rollers.clone())
     }
 }
 

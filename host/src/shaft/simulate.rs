@@ -6,7 +6,7 @@
 
 use nalgebra::DVector;
 
-use super::bearing::{BearingReaction, BearingSpec};
+use super::bearing::{BearingReaction, BearingSpec, RollerState};
 use super::integrator::{NewtonSettings, Scheme, StepError};
 use super::model::RotorModel;
 use super::operating::{build_bearings, OperatingError};
@@ -58,6 +58,8 @@ pub struct Sample {
     pub probes: Vec<[[f64; 2]; 3]>,
     /// Per bearing: its reaction.
     pub bearings: Vec<BearingReaction>,
+    /// Per bearing: per-roller states (roller models only) at the last Newton evaluation.
+    pub rollers: Vec<Option<Vec<RollerState>>>,
 }
 
 /// Max envelopes over the recorded time (None where the bearing model gives no roller data).
@@ -245,6 +247,11 @@ pub fn run(
                 time: st.time,
                 probes,
                 bearings: it.reactions.clone(),
+                rollers: it
+                    .bearing_models()
+                    .iter()
+                    .map(|b| b.roller_states())
+                    .collect(),
             });
         }
     }
