@@ -22,6 +22,12 @@ pub enum ModesError {
     /// The Schur iteration did not converge.
     #[error("the eigenvalue (Schur) iteration did not converge")]
     SchurNotConverged,
+    /// The interior stiffness of a reduction is singular (an interior part not held).
+    #[error("singular interior stiffness: every free part of the shaft must reach a kept node")]
+    SingularInterior,
+    /// A bearing DOF is not a kept (boundary) coordinate of the reduced model.
+    #[error("bearing DOF {0} is not kept by the reduction")]
+    NotKept(usize),
 }
 
 /// Direction of the whirl orbit relative to the spin.
@@ -107,17 +113,14 @@ pub fn damped_modes(
     let ac = a.map(|x| Complex::new(x, 0.0));
     let mut modes = Vec::with_capacity(roots.len());
     for lambda in roots {
-        let vector = if with_shapes {
-            Some(inverse_iteration(&ac, lambda))
+        // The eigenvector is always computed (the whirl needs it); it is kept on request.
+        let v = inverse_iteration(&ac, lambda);
+        let q: Vec<Complex<f64>> = v.iter().take(n).copied().collect();
+        let whirl = whirl_of(&q);
+        let shape = if with_shapes {
+            normalised(q)
         } else {
-            None
-        };
-        let (whirl, shape) = match vector {
-            Some(v) => {
-                let q: Vec<Complex<f64>> = v.iter().take(n).copied().collect();
-                (whirl_of(&q), normalised(q))
-            }
-            None => (Whirl::Planar, Vec::new()),
+            Vec::new()
         };
         modes.push(Mode {
             eigenvalue: lambda,

@@ -71,9 +71,7 @@ pub fn craig_bampton(
     if ni > 0 {
         // The interior with its boundary clamped is held (boundary includes bearing nodes).
         let lu = k_ii.clone().lu();
-        let psi = lu
-            .solve(&(-k_ib))
-            .ok_or(ModesError::MassNotPositiveDefinite)?;
+        let psi = lu.solve(&(-k_ib)).ok_or(ModesError::SingularInterior)?;
         let (_, phi) = undamped_modes(&m_ii, &k_ii)?;
         for (r, &d) in interior.iter().enumerate() {
             for c in 0..nb {
@@ -112,10 +110,10 @@ pub fn frequency_error(
         let idx = [
             reduced
                 .reduced_index(dofs[0])
-                .ok_or(ModesError::MassNotPositiveDefinite)?,
+                .ok_or(ModesError::NotKept(dofs[0]))?,
             reduced
                 .reduced_index(dofs[1])
-                .ok_or(ModesError::MassNotPositiveDefinite)?,
+                .ok_or(ModesError::NotKept(dofs[1]))?,
         ];
         for r in 0..2 {
             for c in 0..2 {
