@@ -4,6 +4,7 @@
 mod analysis_tests;
 mod config_tests;
 mod element_tests;
+mod hub_tests;
 mod integrator_tests;
 mod modes_tests;
 mod response_tests;
