@@ -35,7 +35,7 @@ fn lubricated_bearing_is_stiffer_than_dry_and_stiffens_with_speed() {
         .iter()
         .map(|&s| bearing_stiffness(FilmChoice::Dry, s))
         .collect();
-    eprintln!("bearing stiffness at {speeds:?} rpm: lubricated {lub:.4e}, dry {dry:.4e} N/m");
+    eprintln!("bearing stiffness at {speeds:?} rpm: lubricated {lub:?}, dry {dry:?} N/m");
     for i in 0..speeds.len() {
         assert!(
             lub[i] > 1.1 * dry[i],
