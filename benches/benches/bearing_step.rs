@@ -64,7 +64,7 @@ fn bench_step(c: &mut Criterion) {
         })
     });
     let mut lubricated = hub_motor_bearing();
-    lubricated.settle(&Regression, &states[0], 3);
+    lubricated.settle(&Regression, &states[0], bearing_core::bearing::SETTLE_STEPS);
     let mut j = 0usize;
     group.bench_function("lubricated_regression", |b| {
         b.iter(|| {

@@ -4,44 +4,39 @@
 //! and Q_j = Q(δ_j) from the slices. H falls with Q (EHL: ∝ Q^−0.1; hydrodynamic: ∝ 1/Q), so
 //! the equation has exactly one root for any geometric approach, positive or negative.
 //!
-//! **Continuity at separation.** Each contact's central film is the root-sum-square of the EHL
-//! film and Martin's rigid iso-viscous film, h = √(h_EHL² + h_RI²), h_RI = 6η₀u_mRl/Q. At high
-//! load h_RI vanishes and the EHL model rules; as the rollers separate, Q → 0 and Martin's
+//! **Continuity at separation.** The film sum is the root-sum-square of the EHL films and
+//! Martin's rigid iso-viscous film, H = √(H_EHL² + H_RI²), H_RI = 6η₀u_m(R_in + R_out)l/Q. At
+//! high load H_RI vanishes and the EHL model rules; as the rollers separate, Q → 0 and Martin's
 //! hydrodynamic load takes over smoothly (a C¹ blend, Moes-style; at the crossover it is √2
 //! above either asymptote, where Moes' 7/3 blend gives 2^(3/7) ≈ 1.35). Roller forces are
 //! therefore continuous — and differentiable — in the displacement across the transition.
 //!
-//! **Fixed work.** Two passes over the slices per roller and step:
-//! 1. slices at the warm-start approach give Q₀ and K₀; the film model is called once per
-//!    contact at Q₀ (the *anchor*) and the slices are summarised by the whole-roller power law
-//!    Q = L·(δ − δ_off)^n that matches Q₀, dQ/dδ and d²Q/dδ² (exact for a straight untilted
-//!    roller under the Palmgren law);
-//! 2. the scalar equation δ_off + (Q/L)^(1/n) = δ_geo + H(Q) is solved in λ = ln Q by
-//!    [`INNER_ITERATIONS`] safeguarded Newton steps, the film following the local law
-//!    h_EHL(Q) = h_EHL(Q_a)·(Q/Q_a)^−0.10 (the Dowson–Toyoda exponent, exact for the regression
-//!    model); then the slices are evaluated once more at the new approach, a fresh power law
-//!    is fitted there and the scalar equation re-solved in [`REFINE_ITERATIONS`] steps.
+//! **Fixed work.** One pass over the slices per roller and step. Each roller remembers the
+//! whole-roller power law Q = L·(δ − δ_off)^n fitted to its slices at the previous step
+//! (matched in load, dQ/dδ and d²Q/dδ²; exact for a straight untilted roller under the
+//! Palmgren law). With it,
+//! 1. the scalar equation δ_off + (Q/L)^(1/n) = δ_geo + H(Q) is solved in λ = ln Q by
+//!    [`INNER_ITERATIONS`] safeguarded Newton steps, the film following the step's film law
+//!    (`film_law`);
+//! 2. the slices are evaluated at the resulting approach, a fresh power law is fitted there and
+//!    the equation re-solved in [`REFINE_ITERATIONS`] steps; load and moment follow that law.
 //!
 //! With a warm start from the previous step this meets |Δh|/h ≤ 10⁻³ (tested against a
 //! converged f64 iteration over the PHYSICS.md §5.3 domain).
 
+use super::film_law::{FilmSum, StepFilmLaw};
 use crate::contact::{RollerLoad, SlicedRoller};
-use crate::film::{
-    ContactInput, Film, FilmModel, FilmSource, Regime, CENTRAL_LOAD_EXPONENT, MARTIN_CENTRAL,
-    MARTIN_MINIMUM, MINIMUM_LOAD_EXPONENT,
-};
-use crate::math::{exp, ln, sqrt};
+use crate::film::{ContactInput, Regime};
+use crate::math::{exp, ln, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step.
-pub const INNER_ITERATIONS: usize = 4;
+pub const INNER_ITERATIONS: usize = 2;
 /// Newton steps of the re-solve after the second slice pass.
 pub const REFINE_ITERATIONS: usize = 2;
 
 /// Bracket of the roller load in the scalar solve (N): 10⁻⁴ N … 10⁷ N.
 const LN_LOAD_MIN: f32 = -9.210_34;
 const LN_LOAD_MAX: f32 = 16.118_095;
-/// Smallest load used as the film model's anchor (N); lighter contacts are hydrodynamic.
-const ANCHOR_MIN_N: f32 = 1.0;
 /// Smallest load at which the slices' (Q, K) are trusted for the power-law fit (N).
 const FIT_MIN_N: f32 = 1.0e-3;
 
@@ -58,61 +53,51 @@ pub(crate) struct ContactContext {
     pub ln_l: f32,
 }
 
-/// Per-step film data: the two contacts, and whether there is any entrainment at all.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct StepFilm {
-    pub contacts: [ContactContext; 2],
-    pub lubricated: bool,
-}
-
 /// Result of the coupled solve for one roller.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct CoupledRoller {
     pub load: RollerLoad,
     /// Elastic approach at the roller middle (m).
     pub approach_m: f32,
-    /// Central and minimum film at the inner and outer contact.
-    pub films: [Film; 2],
+    /// λ = ln Q at the solution.
+    pub ln_load: f32,
+    /// (central, minimum) film of the inner and outer contact (m).
+    pub films: [(f32, f32); 2],
     /// dH/dQ of the film sum at the solution (m/N, ≤ 0).
     pub film_slope_m_per_n: f32,
     pub regimes: [Regime; 2],
 }
 
-/// Film sum H and dH/dλ at λ = ln Q, from the anchored local laws.
-#[inline]
-fn film_sum(
-    anchor_central: [f32; 2],
-    martin: [f32; 2],
-    ln_load: f32,
-    ln_anchor: f32,
-) -> (f32, f32, [f32; 2], [f32; 2]) {
-    let s = CENTRAL_LOAD_EXPONENT;
-    let ehl_scale = exp(s * (ln_load - ln_anchor));
-    let inv_load = exp(-ln_load);
-    let mut sum = 0.0;
-    let mut slope = 0.0;
-    let mut ehl = [0.0; 2];
-    let mut hydro = [0.0; 2];
-    for (((&ha, &b), e), r) in anchor_central
-        .iter()
-        .zip(martin.iter())
-        .zip(ehl.iter_mut())
-        .zip(hydro.iter_mut())
-    {
-        let he = ha * ehl_scale;
-        let hr = b * inv_load;
-        let h = sqrt(he * he + hr * hr);
-        sum += h;
-        slope += (s * he * he - hr * hr) / h.max(1.0e-30);
-        *e = he;
-        *r = hr;
+/// What a roller carries from one step to the next: the warm start.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct RollerMemory {
+    /// Power law fitted to the slices at the last step (meaningless before the first step).
+    pub law: StoredLaw,
+    /// ln Q at the last step.
+    pub ln_load: f32,
+}
+
+/// A power law that may not exist yet, chosen without a branch.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct StoredLaw {
+    law: PowerLaw,
+    valid: bool,
+}
+
+impl StoredLaw {
+    /// The stored law, or `fallback` before the first step.
+    fn select_or(&self, fallback: &PowerLaw) -> PowerLaw {
+        PowerLaw {
+            offset_m: select(self.valid, self.law.offset_m, fallback.offset_m),
+            ln_coefficient: select(self.valid, self.law.ln_coefficient, fallback.ln_coefficient),
+            exponent: select(self.valid, self.law.exponent, fallback.exponent),
+        }
     }
-    (sum, slope, ehl, hydro)
 }
 
 /// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach.
-#[derive(Clone, Copy, Debug)]
-struct PowerLaw {
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct PowerLaw {
     /// δ_off (m).
     offset_m: f32,
     /// ln L.
@@ -133,56 +118,47 @@ impl PowerLaw {
         approach_m: f32,
         tilt_rad: f32,
     ) -> Self {
+        // Both branches are computed and selected (see `math::select`): fixed work.
         let q = load.load_n;
         let k = load.stiffness_n_per_m;
-        let fit = q > FIT_MIN_N && k > 0.0;
-        let rho1 = if fit { k / q } else { 1.0 };
-        let rho2 = if fit {
-            load.stiffness_derivative_n_per_m2 / k
-        } else {
-            0.0
-        };
-        let curvature_fit = fit && rho1 - rho2 > 0.0;
-        let span = if curvature_fit {
-            1.0 / (rho1 - rho2)
-        } else {
-            (10.0 / 9.0) / rho1
-        };
-        let exponent = if curvature_fit {
-            (span * rho1).clamp(1.0, 4.0)
-        } else {
-            10.0 / 9.0
-        };
-        if fit {
-            Self {
-                offset_m: approach_m - span,
-                ln_coefficient: ln(q) - exponent * ln(span),
-                exponent,
-            }
-        } else {
-            Self {
-                offset_m: roller.touch_approach_tilted_m(tilt_rad),
-                ln_coefficient: ln(roller.nominal_coefficient()),
-                exponent: 10.0 / 9.0,
-            }
+        let fit = (q > FIT_MIN_N) & (k > 0.0);
+        let rho1 = select(fit, k / max(q, FIT_MIN_N), 1.0);
+        let rho2 = select(
+            fit,
+            load.stiffness_derivative_n_per_m2 / max(k, 1.0e-30),
+            0.0,
+        );
+        let curvature_fit = fit & (rho1 - rho2 > 0.0);
+        let span = select(
+            curvature_fit,
+            1.0 / max(rho1 - rho2, 1.0e-30),
+            (10.0 / 9.0) / rho1,
+        );
+        let exponent = select(curvature_fit, min(max(span * rho1, 1.0), 4.0), 10.0 / 9.0);
+        Self {
+            offset_m: select(
+                fit,
+                approach_m - span,
+                roller.touch_approach_tilted_m(tilt_rad),
+            ),
+            ln_coefficient: select(
+                fit,
+                ln(max(q, FIT_MIN_N)) - exponent * ln(span),
+                roller.ln_nominal_coefficient(),
+            ),
+            exponent,
         }
     }
 }
 
-/// The films of a roller's two contacts as functions of its load, anchored at one model call.
+/// Result of a scalar solve: λ = ln Q and the film sum there.
 #[derive(Clone, Copy, Debug)]
-struct FilmLaw {
-    anchor_central: [f32; 2],
-    martin: [f32; 2],
-    ln_anchor: f32,
-}
-
-impl FilmLaw {
-    /// Film sum H, dH/dλ, and the EHL and hydrodynamic parts of each contact at λ = ln Q.
-    #[inline]
-    fn at(&self, ln_load: f32) -> (f32, f32, [f32; 2], [f32; 2]) {
-        film_sum(self.anchor_central, self.martin, ln_load, self.ln_anchor)
-    }
+struct Solved {
+    ln_load: f32,
+    /// H at λ (m), extrapolated linearly from the last evaluation.
+    film_m: f32,
+    /// dH/dλ at the last evaluation (m).
+    film_slope_m: f32,
 }
 
 /// Solve δ_off + (Q/L)^(1/n) = δ_geo + H(Q) for λ = ln Q by `iterations` safeguarded Newton
@@ -190,156 +166,124 @@ impl FilmLaw {
 /// the elastic approach still missing. Both sides are close to linear in λ (EHL: ln H ≈ −0.1λ,
 /// hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges in a few steps from
 /// anywhere in the bracket; Φ' > 0 throughout. The dry load (film ≡ 0) bounds the root from
-/// below: the film only adds approach.
+/// below: the film only adds approach. The film sum at the returned λ is the last evaluation
+/// continued by its tangent (second-order accurate, and free).
 fn solve_load(
     law: &PowerLaw,
-    films: &FilmLaw,
+    films: &StepFilmLaw,
     geometric_approach_m: f32,
     start: f32,
     iterations: usize,
-) -> f32 {
+) -> Solved {
     let gap = geometric_approach_m - law.offset_m;
     let inverse_exponent = 1.0 / law.exponent;
-    let ln_dry = law.ln_coefficient + law.exponent * ln(gap.max(1.0e-30));
-    let mut lo = if gap > 0.0 {
-        ln_dry.max(LN_LOAD_MIN)
-    } else {
-        LN_LOAD_MIN
-    };
-    let mut hi = LN_LOAD_MAX.max(lo);
-    let mut lam = if start > lo && start < hi {
+    let ln_dry = law.ln_coefficient + law.exponent * ln(max(gap, 1.0e-30));
+    let mut lo = select(gap > 0.0, max(ln_dry, LN_LOAD_MIN), LN_LOAD_MIN);
+    let mut hi = max(LN_LOAD_MAX, lo);
+    let mut lam = if (start > lo) & (start < hi) {
         start
     } else {
         lo + 0.5
     };
+    let mut last = (lam, 0.0, 0.0);
     for _ in 0..iterations {
         let elastic = exp(inverse_exponent * (lam - law.ln_coefficient));
-        let (h, dh, _, _) = films.at(lam);
+        let f = films.sum_at(lam);
+        let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
+        last = (lam, f.total_m, dh);
         let missing = elastic - gap;
-        let h = h.max(1.0e-30);
         let defined = missing > 0.0;
-        let residual = if defined { ln(missing / h) } else { -1.0 };
-        let slope = inverse_exponent * elastic / missing.max(1.0e-30) - dh / h;
-        if residual > 0.0 {
-            hi = lam;
-        } else {
-            lo = lam;
-        }
+        let residual = select(defined, ln(max(missing, 1.0e-30) / h), -1.0);
+        let slope = inverse_exponent * elastic / max(missing, 1.0e-30) - dh / h;
+        let above = residual > 0.0;
+        // Plain values on both sides: a conditional move, no branch.
+        hi = if above { lam } else { hi };
+        lo = if above { lo } else { lam };
         let newton = lam - residual / slope;
-        lam = if defined && newton >= lo && newton <= hi {
-            newton
-        } else {
-            0.5 * (lo + hi)
-        };
+        lam = select(
+            defined & (newton >= lo) & (newton <= hi),
+            newton,
+            0.5 * (lo + hi),
+        );
     }
-    lam
+    let (at, film_m, film_slope_m) = last;
+    Solved {
+        ln_load: lam,
+        film_m: max(film_m + film_slope_m * (lam - at), 0.0),
+        film_slope_m,
+    }
 }
 
-/// Solve one roller: geometric approach `δ_geo` (m), tilt `ψ` (rad), warm-start approach (m).
-pub(crate) fn solve_roller<F: FilmModel + ?Sized, const S: usize>(
+/// Solve one roller: geometric approach `δ_geo` (m), tilt `ψ` (rad), with its memory of the
+/// last step (updated).
+pub(crate) fn solve_roller<const S: usize>(
     roller: &SlicedRoller<S>,
-    film: &F,
-    step: &StepFilm,
+    films: &StepFilmLaw,
+    ln_m_offsets: [f32; 2],
+    ln_l: [f32; 2],
     geometric_approach_m: f32,
     tilt_rad: f32,
-    warm_approach_m: f32,
+    memory: &mut RollerMemory,
 ) -> CoupledRoller {
-    // Pass 1: slices at the warm start, film model at the anchor load.
-    let r0 = roller.evaluate(warm_approach_m, tilt_rad);
-    let anchor = r0.load_n.max(ANCHOR_MIN_N);
-    let [inner, outer] = step.contacts;
-    let with_load = |c: &ContactContext| ContactInput {
-        load_n: anchor,
-        ..c.template
-    };
-    let anchor_films = [film.film(&with_load(&inner)), film.film(&with_load(&outer))];
-    let lubricated = step.lubricated;
-    let films = FilmLaw {
-        anchor_central: [
-            if lubricated {
-                anchor_films[0].central_m
-            } else {
-                0.0
-            },
-            if lubricated {
-                anchor_films[1].central_m
-            } else {
-                0.0
-            },
-        ],
-        martin: [inner.martin, outer.martin],
-        ln_anchor: ln(anchor),
-    };
-    let law0 = PowerLaw::fit(roller, &r0, warm_approach_m, tilt_rad);
-    let lam1 = solve_load(
+    // 1. Solve with last step's summary of the slices (or, first time, a straight roller's
+    //    law from its first touching slice).
+    // (Both computed and selected, so the first step costs what every step costs.)
+    let untouched = PowerLaw::fit(roller, &RollerLoad::default(), 0.0, tilt_rad);
+    let law0 = memory.law.select_or(&untouched);
+    let solved1 = solve_load(
         &law0,
-        &films,
+        films,
         geometric_approach_m,
-        ln(r0.load_n.max(1.0e-4)),
+        memory.ln_load,
         INNER_ITERATIONS,
     );
-    let approach1 = geometric_approach_m + films.at(lam1).0;
+    let approach1 = geometric_approach_m + solved1.film_m;
 
-    // Pass 2: slices at that approach, a fresh power law there and a short re-solve. The law
-    // matches the slices in load, stiffness and curvature at `approach1`, so the remaining
-    // error is third order in the step from `approach1`; load and moment follow the law.
+    // 2. The one slice pass, a fresh power law there and a short re-solve. The law matches the
+    //    slices in load, stiffness and curvature at `approach1`, so the remaining error is third
+    //    order in the step from `approach1`; load and moment follow the law.
     let r1 = roller.evaluate(approach1, tilt_rad);
     let law1 = PowerLaw::fit(roller, &r1, approach1, tilt_rad);
-    let lam2 = solve_load(
+    let solved2 = solve_load(
         &law1,
-        &films,
+        films,
         geometric_approach_m,
-        ln(r1.load_n.max(1.0e-4)),
+        ln(max(r1.load_n, 1.0e-4)),
         REFINE_ITERATIONS,
     );
-    let (h2, _, _, _) = films.at(lam2);
-    let approach_m = geometric_approach_m + h2;
-    let dry_pass = approach_m <= law1.offset_m;
+    let approach_m = geometric_approach_m + solved2.film_m;
+    let ln_load = solved2.ln_load;
+    let load_n = exp(ln_load);
     let mut load = r1;
-    load.load_n = if dry_pass {
-        0.0
-    } else {
-        exp(law1.ln_coefficient + law1.exponent * ln(approach_m - law1.offset_m))
-    };
+    // At the root, Q = e^λ is the law's load at `approach_m`; a roller whose approach stays
+    // short of the law's offset (no film, separated) carries nothing.
+    load.load_n = select(approach_m > law1.offset_m, load_n, 0.0);
     load.moment_nm += load.stiffness_moment_n * (approach_m - approach1);
-    let ln_load = ln(load.load_n.max(1.0e-4));
-    let (_, dh, ehl, hydro) = films.at(ln_load);
-    let min_scale = exp(MINIMUM_LOAD_EXPONENT * (ln_load - films.ln_anchor));
-    let mut films = [Film::ZERO; 2];
-    let mut regimes = [Regime::Dry; 2];
-    for ((((f, r), a), (&he, &hr)), c) in films
-        .iter_mut()
-        .zip(regimes.iter_mut())
-        .zip(anchor_films.iter())
-        .zip(ehl.iter().zip(hydro.iter()))
-        .zip(step.contacts.iter())
-    {
-        let he_min = if lubricated {
-            a.minimum_m * min_scale
-        } else {
-            0.0
-        };
-        let hr_min = hr * (MARTIN_MINIMUM / MARTIN_CENTRAL);
-        *f = Film {
-            central_m: sqrt(he * he + hr * hr),
-            minimum_m: sqrt(he_min * he_min + hr_min * hr_min),
-            source: if lubricated {
-                a.source
-            } else {
-                FilmSource::None
-            },
-        };
-        *r = if lubricated {
-            Regime::from_ln_moes(ln_load - c.ln_m_offset, c.ln_l)
-        } else {
-            Regime::Dry
-        };
-    }
+    *memory = RollerMemory {
+        law: StoredLaw {
+            law: law1,
+            valid: true,
+        },
+        ln_load,
+    };
+
+    let sum = FilmSum {
+        total_m: solved2.film_m,
+        slope_m: solved2.film_slope_m,
+        inv_load: 1.0 / load_n,
+    };
+    let per_contact = films.contacts_at(ln_load, &sum);
+    let regime = |k: usize| {
+        let offset = ln_m_offsets.get(k).copied().unwrap_or(0.0);
+        let l = ln_l.get(k).copied().unwrap_or(0.0);
+        Regime::from_ln_moes(ln_load - offset, l)
+    };
     CoupledRoller {
         load,
         approach_m,
-        films,
-        film_slope_m_per_n: dh / load.load_n.max(1.0e-4),
-        regimes,
+        ln_load,
+        films: per_contact,
+        film_slope_m_per_n: sum.slope_m / load_n,
+        regimes: [regime(0), regime(1)],
     }
 }

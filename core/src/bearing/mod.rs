@@ -9,10 +9,12 @@
 
 mod coupling;
 mod equilibrium;
+mod film_law;
 mod output;
 
-pub use coupling::INNER_ITERATIONS;
+pub use coupling::{INNER_ITERATIONS, REFINE_ITERATIONS};
 pub use equilibrium::Equilibrium;
+pub use film_law::FILM_NODES;
 pub use output::{BearingOutput, RollerOutput, StepStatus};
 
 use crate::contact::{ContactLaw, SlicedRoller};
@@ -20,8 +22,9 @@ use crate::error::{in_range, Allowed, ParamError};
 use crate::film::{ContactInput, FilmModel, Regime};
 use crate::math::{ln, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
-use coupling::{solve_roller, ContactContext, StepFilm};
-use output::add_roller_stiffness;
+use coupling::{solve_roller, ContactContext, RollerMemory};
+use film_law::{source_at, StepFilmLaw};
+use output::StiffnessSums;
 
 /// Everything that defines a lubricated roller bearing.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -95,6 +98,15 @@ impl BearingParams {
     }
 }
 
+/// Steps [`Bearing::settle`] needs from a cold start (tested over the PHYSICS.md §5.3 domain).
+pub const SETTLE_STEPS: usize = 6;
+
+/// Floor of the entrainment speed in the film arithmetic (m/s); see `contact_contexts`.
+const MIN_ENTRAINMENT_M_S: f32 = 1.0e-6;
+
+/// ln Q span of the film nodes before any step has loaded a roller: 10 N … 3 kN.
+const DEFAULT_LOAD_SPAN: (f32, f32) = (core::f32::consts::LN_10, 8.006_368);
+
 /// A bearing of `Z` rollers with `S` slices each, with its warm start.
 #[derive(Clone, Debug)]
 pub struct Bearing<const Z: usize, const S: usize> {
@@ -104,8 +116,11 @@ pub struct Bearing<const Z: usize, const S: usize> {
     pitch: [(f32, f32); Z],
     /// 2πj/Z (rad).
     pitch_angle_rad: [f32; Z],
-    /// Elastic approach of each roller at the last step: the warm start (m).
-    warm_approach_m: [f32; Z],
+    /// What each roller carries to the next step: the warm start.
+    memory: [RollerMemory; Z],
+    /// ln Q of the lightest and heaviest loaded roller at the last step: where the next step
+    /// evaluates the film model.
+    load_span: (f32, f32),
     output: BearingOutput<Z>,
 }
 
@@ -144,7 +159,8 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             params,
             pitch,
             pitch_angle_rad,
-            warm_approach_m: [0.0; Z],
+            memory: [RollerMemory::default(); Z],
+            load_span: DEFAULT_LOAD_SPAN,
             output: BearingOutput::ZERO,
         })
     }
@@ -166,14 +182,23 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
 
     /// Forget the warm start (the next step starts from unloaded rollers).
     pub fn reset(&mut self) {
-        self.warm_approach_m = [0.0; Z];
+        self.memory = [RollerMemory::default(); Z];
+        self.load_span = DEFAULT_LOAD_SPAN;
     }
 
-    /// Per-step film context of the two contacts.
-    fn step_film(&self, shaft_speed_rad_s: f32) -> StepFilm {
+    /// Per-step data of the two contacts (inner, outer).
+    fn contact_contexts(&self, shaft_speed_rad_s: f32) -> [ContactContext; 2] {
         let p = &self.params;
         let context = |outer: bool| {
-            let template = p.contact_input(outer, 0.0, shaft_speed_rad_s);
+            let mut template = p.contact_input(outer, 0.0, shaft_speed_rad_s);
+            // Computed with a floor of 1 µm/s on the entrainment speed, so a shaft at standstill
+            // runs the same arithmetic, on normal (not subnormal) numbers, as a turning one:
+            // exact zeros and subnormals took a different number of instructions on the
+            // emulated M4. At the floor the films are ≈10⁻¹⁰ m and a roller 1 µm clear of its
+            // races still carries ≈0.03 N of hydrodynamic load; the step reports zero films,
+            // dry regimes and no film source at standstill.
+            template.entrainment_speed_m_s =
+                crate::math::max(template.entrainment_speed_m_s, MIN_ENTRAINMENT_M_S);
             let er = template.reduced_modulus_pa * template.reduced_radius_m;
             let speed = template.viscosity_pa_s * template.entrainment_speed_m_s;
             let ln_2u = core::f32::consts::LN_2 + ln(speed) - ln(er);
@@ -185,11 +210,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 ln_l: ln_g + 0.25 * ln_2u,
             }
         };
-        let contacts = [context(false), context(true)];
-        StepFilm {
-            lubricated: contacts[0].template.entrainment_speed_m_s > 0.0,
-            contacts,
-        }
+        [context(false), context(true)]
     }
 
     /// One lubricated step: roller films from `film`, film-coupled loads, forces, stiffness.
@@ -204,35 +225,79 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         if let Err(e) = state.check() {
             return self.reject(e);
         }
-        let step_film = self.step_film(state.shaft_speed_rad_s);
+        let [inner, outer] = self.contact_contexts(state.shaft_speed_rad_s);
+        let lubricated = self
+            .params
+            .geometry
+            .entrainment_speed_m_s(state.shaft_speed_rad_s)
+            > 0.0;
+        let templates = [inner.template, outer.template];
+        let films = StepFilmLaw::new(
+            film,
+            templates,
+            [inner.martin, outer.martin],
+            self.load_span,
+        );
+        let ln_m_offsets = [inner.ln_m_offset, outer.ln_m_offset];
+        let ln_l = [inner.ln_l, outer.ln_l];
+        let mut span = (f32::MAX, f32::MIN);
         self.assemble(state, |bearing, j, geometric, tilt| {
-            let warm = bearing.warm_approach_m.get(j).copied().unwrap_or(0.0);
-            let r = solve_roller(&bearing.roller, film, &step_film, geometric, tilt, warm);
-            if let Some(w) = bearing.warm_approach_m.get_mut(j) {
-                *w = r.approach_m;
+            let mut memory = bearing.memory.get(j).copied().unwrap_or_default();
+            let r = solve_roller(
+                &bearing.roller,
+                &films,
+                ln_m_offsets,
+                ln_l,
+                geometric,
+                tilt,
+                &mut memory,
+            );
+            if let Some(m) = bearing.memory.get_mut(j) {
+                *m = memory;
             }
-            let [fin, fout] = r.films;
+            let loaded = r.load.load_n >= 1.0;
+            span = (
+                crate::math::select(loaded, crate::math::min(span.0, r.ln_load), span.0),
+                crate::math::select(loaded, crate::math::max(span.1, r.ln_load), span.1),
+            );
+            let [(central_in, min_in), (central_out, min_out)] = r.films;
             let s0 = r.load.stiffness_n_per_m;
             let coupling = r.film_slope_m_per_n / (1.0 - s0 * r.film_slope_m_per_n);
+            let shown = |h: f32| crate::math::select(lubricated, h, 0.0);
             let roller = RollerOutput {
                 approach_m: r.approach_m,
-                central_film_in_m: fin.central_m,
-                central_film_out_m: fout.central_m,
-                min_film_in_m: fin.minimum_m,
-                min_film_out_m: fout.minimum_m,
+                central_film_in_m: shown(central_in),
+                central_film_out_m: shown(central_out),
+                min_film_in_m: shown(min_in),
+                min_film_out_m: shown(min_out),
                 roller_stiffness_n_per_m: s0 / (1.0 - s0 * r.film_slope_m_per_n),
-                regime_in: r.regimes[0],
-                regime_out: r.regimes[1],
-                film_source_in: fin.source,
-                film_source_out: fout.source,
+                regime_in: if lubricated {
+                    r.regimes[0]
+                } else {
+                    Regime::Dry
+                },
+                regime_out: if lubricated {
+                    r.regimes[1]
+                } else {
+                    Regime::Dry
+                },
+                film_source_in: source_at(film, &templates[0], r.load.load_n, lubricated),
+                film_source_out: source_at(film, &templates[1], r.load.load_n, lubricated),
                 ..RollerOutput::ZERO
             };
             (r.load, roller, coupling)
-        })
+        });
+        // The loads the next step's film model sees; unchanged when nothing is loaded.
+        if span.0 <= span.1 {
+            self.load_span = span;
+        }
+        &self.output
     }
 
     /// Run [`Bearing::step`] `steps` times at the same state, so the warm start converges
-    /// before a real-time loop begins (three steps reach |Δh|/h ≤ 10⁻³ from a cold start).
+    /// before a real-time loop begins ([`SETTLE_STEPS`] reach |Δh|/h ≤ 10⁻³ from a cold start;
+    /// a crowned roller just touching needs four: its first step has neither a power law of its
+    /// own nor film nodes at its load).
     pub fn settle<F: FilmModel + ?Sized>(
         &mut self,
         film: &F,
@@ -271,7 +336,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
 
     /// Run `roller_step` for every roller and sum forces, moments, stiffness and damping.
     /// `roller_step(self, j, geometric approach, tilt)` returns the slice load, the roller's
-    /// film fields and the film coupling factor of the stiffness (see `add_roller_stiffness`).
+    /// film fields and the film coupling factor of the stiffness (see `StiffnessSums`).
     fn assemble(
         &mut self,
         state: &OperatingState,
@@ -289,6 +354,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         let damping = self.params.damping_factor_s;
         let (sin_c, cos_c) = sin_cos(state.cage_angle_rad);
         let mut out = BearingOutput::<Z>::ZERO;
+        let mut stiffness = StiffnessSums::default();
         for j in 0..Z {
             let (cp, sp) = self.pitch.get(j).copied().unwrap_or((1.0, 0.0));
             // Roller direction θ_j = θ_c + 2πj/Z by the angle-sum identities.
@@ -300,13 +366,12 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             let approach_rate = vx * c + vy * s;
             let damping_force = damping * load.stiffness_n_per_m * approach_rate;
             // A roller pushes, it cannot pull: the total roller force is clamped at zero.
-            let roller_force = (load.load_n + damping_force).max(0.0);
+            let roller_force = crate::math::max(load.load_n + damping_force, 0.0);
             out.force_n[0] -= roller_force * c;
             out.force_n[1] -= roller_force * s;
             out.moment_nm[0] += load.moment_nm * s;
             out.moment_nm[1] -= load.moment_nm * c;
-            add_roller_stiffness(
-                &mut out.stiffness,
+            stiffness.add(
                 (c, s),
                 [
                     load.stiffness_n_per_m,
@@ -332,6 +397,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 *slot = roller;
             }
         }
+        out.stiffness = stiffness.matrix();
         self.output = out;
         &self.output
     }

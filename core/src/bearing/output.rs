@@ -125,26 +125,54 @@ impl<const Z: usize> BearingOutput<Z> {
     }
 }
 
-/// Add one roller's share to the stiffness matrix.
+/// The bearing stiffness summed roller by roller in nine scalars.
 ///
 /// Slice k has approach δ_k = aₖ·g + const with aₖ = u + x_k·v, u = (c, s, 0, 0),
-/// v = (0, 0, −s, c); K = Σ_k q'_k aₖaₖᵀ + c_f·b bᵀ with b = Σ_k q'_k aₖ and the film coupling
-/// c_f = H'/(1 − K_j H') (H' = dH/dQ of the film sum, ≤ 0): the roller load depends on the film,
-/// which depends on the roller load.
-pub(crate) fn add_roller_stiffness(
-    k: &mut [[f32; 4]; 4],
-    (c, s): (f32, f32),
-    sums: [f32; 3],
-    film_coupling: f32,
-) {
-    let [s0, s1, s2] = sums;
-    let u = [c, s, 0.0, 0.0];
-    let v = [0.0, 0.0, -s, c];
-    let b = [s0 * c, s0 * s, -s1 * s, s1 * c];
-    for (((row, &ui), &vi), &bi) in k.iter_mut().zip(u.iter()).zip(v.iter()).zip(b.iter()) {
-        for (((kij, &uj), &vj), &bj) in row.iter_mut().zip(u.iter()).zip(v.iter()).zip(b.iter()) {
-            *kij +=
-                s0 * ui * uj + s1 * (ui * vj + vi * uj) + s2 * vi * vj + film_coupling * bi * bj;
+/// v = (0, 0, −s, c); a roller contributes Σ_k q'_k aₖaₖᵀ + c_f·b bᵀ with b = Σ_k q'_k aₖ and the
+/// film coupling c_f = H'/(1 − K_j H') (H' = dH/dQ of the film sum, ≤ 0): the roller load depends
+/// on the film, which depends on the roller load. With the slice sums S₀ = Σq', S₁ = Σq'x,
+/// S₂ = Σq'x² that is A·uuᵀ + B·(uvᵀ + vuᵀ) + C·vvᵀ, A = S₀ + c_f S₀², B = S₁ + c_f S₀S₁,
+/// C = S₂ + c_f S₁², and every entry of the 4×4 matrix is one of A, B, C times c², cs or s².
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct StiffnessSums {
+    /// Σ A·(c², cs, s²), Σ B·(…), Σ C·(…).
+    a: [f32; 3],
+    b: [f32; 3],
+    c: [f32; 3],
+}
+
+impl StiffnessSums {
+    /// Add one roller at direction (c, s) = (cos θ, sin θ) with slice sums [S₀, S₁, S₂] and film
+    /// coupling factor c_f.
+    #[inline]
+    pub(crate) fn add(&mut self, (c, s): (f32, f32), [s0, s1, s2]: [f32; 3], film_coupling: f32) {
+        let trig = [c * c, c * s, s * s];
+        let a = s0 + film_coupling * s0 * s0;
+        let b = s1 + film_coupling * s0 * s1;
+        let cc = s2 + film_coupling * s1 * s1;
+        for (((sa, sb), sc), t) in self
+            .a
+            .iter_mut()
+            .zip(self.b.iter_mut())
+            .zip(self.c.iter_mut())
+            .zip(trig)
+        {
+            *sa += a * t;
+            *sb += b * t;
+            *sc += cc * t;
         }
+    }
+
+    /// −∂(F_x, F_y, M_x, M_y)/∂(x, y, tilt_x, tilt_y).
+    pub(crate) fn matrix(&self) -> [[f32; 4]; 4] {
+        let [acc, acs, ass] = self.a;
+        let [bcc, bcs, bss] = self.b;
+        let [ccc, ccs, css] = self.c;
+        [
+            [acc, acs, -bcs, bcc],
+            [acs, ass, -bss, bcs],
+            [-bcs, -bss, css, -ccs],
+            [bcc, bcs, -ccs, ccc],
+        ]
     }
 }

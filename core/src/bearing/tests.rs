@@ -226,8 +226,8 @@ proptest! {
         prop_assert!(dh <= 1e-3, "h {} vs {h_ref} ({dh:.2e}), Q {} vs {q_ref}", r.central_film_in_m, r.load_n);
     }
 
-    /// Cold start (no warm start at all): [`Bearing::settle`] (three steps at the same state)
-    /// reaches the same 1e-3 accuracy. (A single cold step of a crowned roller near first touch
+    /// Cold start (no warm start at all): [`Bearing::settle`] ([`SETTLE_STEPS`] steps at the
+    /// same state) reaches the same 1e-3 accuracy. (A single cold step of a crowned roller near first touch
     /// can be tens of percent off: settle before a real-time loop starts.)
     #[test]
     fn film_fixed_point_from_a_cold_start_after_settling(
@@ -246,7 +246,7 @@ proptest! {
         let s = OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega, 0.0).unwrap();
         let (q_ref, h_ref) = reference_roller(&p, 10, x as f64, omega as f64);
         prop_assume!(q_ref > 1.0 && q_ref < 5000.0);
-        let r = b.settle(&Regression, &s, 3).rollers[0];
+        let r = b.settle(&Regression, &s, SETTLE_STEPS).rollers[0];
         let dh = (r.central_film_in_m as f64 / h_ref - 1.0).abs();
         prop_assert!(dh <= 1e-3, "h {} vs {h_ref} ({dh:.2e}), Q {} vs {q_ref}", r.central_film_in_m, r.load_n);
     }
@@ -289,7 +289,7 @@ proptest! {
 fn rejected_state_names_the_field_and_keeps_the_warm_start() {
     let mut b = Bearing::<17, 10>::new(hub_params(-2e-6, Crown::None)).unwrap();
     b.step(&Regression, &state(0.0, -5e-6, 10_000.0));
-    let warm = b.warm_approach_m;
+    let warm = b.memory;
     let bad = OperatingState {
         shaft_speed_rad_s: f32::NAN,
         ..state(0.0, -5e-6, 10_000.0)
@@ -300,7 +300,7 @@ fn rejected_state_names_the_field_and_keeps_the_warm_start() {
         StepStatus::Ok => panic!("NaN speed accepted"),
     }
     assert_eq!(out.force_n, [0.0, 0.0]);
-    assert_eq!(b.warm_approach_m, warm);
+    assert_eq!(b.memory, warm);
 }
 
 #[test]

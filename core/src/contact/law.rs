@@ -16,7 +16,7 @@
 //!   (Hamrock, *Fundamentals of Fluid Film Lubrication*, 1994, ch. 17), valid for any E' and
 //!   sensitive to the raceway radii; implicit in w, solved by a fixed number of Newton steps.
 
-use crate::math::{exp, ln, pow};
+use crate::math::{exp, ln, min, pow, pow_10_9};
 
 /// Dimensionless constant of the homogeneous Palmgren law δ = k·(w/E')^0.9·l^0.1, per contact.
 ///
@@ -25,7 +25,7 @@ use crate::math::{exp, ln, pow};
 pub const PALMGREN_K: f32 = 2.5775;
 
 /// Largest approach the laws are evaluated at (m).
-const MAX_APPROACH_M: f32 = 1.0e-2;
+const MAX_APPROACH_M: f32 = 1.0e-2; // also keeps `pow_10_9` in its range
 
 /// Newton steps used to invert the Lundberg law (from a Palmgren start; converged to f32).
 const LUNDBERG_NEWTON_STEPS: usize = 4;
@@ -87,24 +87,23 @@ impl BoundLaw {
     pub(crate) fn load_per_length(&self, approach_m: f32) -> (f32, f32, f32) {
         let positive = approach_m > 0.0;
         // Approaches beyond 1 cm are not elastic contact any more; the clamp keeps ∞ finite.
+        // Cheap operands: a conditional move. The results below are masked by multiplying
+        // with 0 or 1, which keeps them in the data flow (no branch can skip the power).
         let d = if positive {
-            approach_m.min(MAX_APPROACH_M)
+            min(approach_m, MAX_APPROACH_M)
         } else {
             1.0e-12
         };
+        let mask = if positive { 1.0 } else { 0.0 };
         let (w, dw, d2w) = match self.law {
             ContactLaw::Palmgren => {
-                let w = self.palmgren_coefficient * pow(d, 10.0 / 9.0);
+                let w = self.palmgren_coefficient * pow_10_9(d);
                 let w_per_d = w / d;
                 (w, (10.0 / 9.0) * w_per_d, (10.0 / 81.0) * w_per_d / d)
             }
             ContactLaw::Lundberg => self.lundberg(d),
         };
-        if positive {
-            (w, dw, d2w)
-        } else {
-            (0.0, 0.0, 0.0)
-        }
+        (w * mask, dw * mask, d2w * mask)
     }
 
     /// Invert δ = (4w/(πE'))·[ln(A/w) − 1], A = 2πE'√(R_in R_out), for w by Newton in v = ln w.
@@ -113,12 +112,15 @@ impl BoundLaw {
         let ln_a = self.lundberg_ln_a;
         // The law is monotone only while ln(A/w) > 2; stay inside.
         let v_max = ln_a - 2.5;
-        let mut v = ln(self.palmgren_coefficient * pow(approach_m, 10.0 / 9.0)).min(v_max);
+        let mut v = min(
+            ln(self.palmgren_coefficient * pow(approach_m, 10.0 / 9.0)),
+            v_max,
+        );
         for _ in 0..LUNDBERG_NEWTON_STEPS {
             let w = exp(v);
             let f = c * w * (ln_a - v - 1.0) - approach_m;
             let df = c * w * (ln_a - v - 2.0);
-            v = (v - f / df).min(v_max);
+            v = min(v - f / df, v_max);
         }
         let w = exp(v);
         // dδ/dw = g = c·(ln A − v − 2); dw/dδ = 1/g; d²w/dδ² = c/(g³·w).

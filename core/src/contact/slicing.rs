@@ -6,6 +6,7 @@
 //! (on both contacts, hence 2P). Only slices with δ_k > 0 carry load.
 
 use super::law::{BoundLaw, ContactLaw};
+use crate::math::max;
 use crate::params::BearingGeometry;
 
 /// Load state of one roller, with the slice sums the stiffness matrix needs.
@@ -36,6 +37,8 @@ pub struct SlicedRoller<const S: usize> {
     crown_offsets_m: [f32; S],
     /// Approach at the roller middle where the first slice touches without tilt (m, ≥ 0).
     touch_approach_m: f32,
+    /// ln of [`SlicedRoller::nominal_coefficient`].
+    ln_nominal_coefficient: f32,
 }
 
 impl<const S: usize> SlicedRoller<S> {
@@ -65,12 +68,14 @@ impl<const S: usize> SlicedRoller<S> {
             *c = -2.0 * geometry.crown_drop_m(*x);
             touch = touch.min(-*c);
         }
+        let nominal = bound.palmgren_coefficient() * slice_length_m * S as f32;
         Self {
             law: bound,
             slice_length_m,
             positions_m,
             crown_offsets_m,
             touch_approach_m: if S == 0 { 0.0 } else { touch },
+            ln_nominal_coefficient: crate::math::ln(nominal),
         }
     }
 
@@ -97,12 +102,17 @@ impl<const S: usize> SlicedRoller<S> {
             .positions_m
             .iter()
             .zip(self.crown_offsets_m.iter())
-            .fold(f32::MIN, |m, (&x, &c)| m.max(x * tilt_rad + c));
+            .fold(f32::MIN, |m, (&x, &c)| max(x * tilt_rad + c, m));
         if S == 0 {
             0.0
         } else {
             -lead
         }
+    }
+
+    /// ln of the nominal coefficient (precomputed).
+    pub fn ln_nominal_coefficient(&self) -> f32 {
+        self.ln_nominal_coefficient
     }
 
     /// Load, moment and stiffness for approach `δ` (m) at the roller middle and tilt `ψ` (rad).

@@ -43,15 +43,16 @@ impl LnGroups {
 impl ContactInput {
     /// True when every field is finite and strictly positive (α may be zero: iso-viscous).
     pub fn is_valid(&self) -> bool {
-        let positive = |v: f32| v.is_finite() && v > 0.0;
+        // `&`, not `&&`: every field is checked, so the work does not depend on the data.
+        let positive = |v: f32| v.is_finite() & (v > 0.0);
         positive(self.load_n)
-            && positive(self.length_m)
-            && positive(self.entrainment_speed_m_s)
-            && positive(self.reduced_radius_m)
-            && positive(self.reduced_modulus_pa)
-            && positive(self.viscosity_pa_s)
-            && self.pressure_viscosity_pa_inv.is_finite()
-            && self.pressure_viscosity_pa_inv >= 0.0
+            & positive(self.length_m)
+            & positive(self.entrainment_speed_m_s)
+            & positive(self.reduced_radius_m)
+            & positive(self.reduced_modulus_pa)
+            & positive(self.viscosity_pa_s)
+            & self.pressure_viscosity_pa_inv.is_finite()
+            & (self.pressure_viscosity_pa_inv >= 0.0)
     }
 
     /// Load per unit length w = Q/l (N/m).

@@ -40,6 +40,14 @@ impl FilmModel for Hydrodynamic {
         "hydrodynamic"
     }
 
+    fn source_for(&self, contact: &ContactInput) -> FilmSource {
+        if contact.is_valid() {
+            FilmSource::Regression
+        } else {
+            FilmSource::None
+        }
+    }
+
     fn film(&self, contact: &ContactInput) -> Film {
         let central_m = martin_central_m(contact);
         let film = Film {

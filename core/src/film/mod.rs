@@ -76,6 +76,13 @@ pub trait FilmModel {
     fn name(&self) -> &'static str;
     /// Central and minimum film of one contact.
     fn film(&self, contact: &ContactInput) -> Film;
+
+    /// Which model would serve `contact` (the model itself, or a fallback), without computing
+    /// the film. The bearing step calls the model at a few loads per step and asks this for
+    /// every contact; a network overrides it with its domain guard.
+    fn source_for(&self, contact: &ContactInput) -> FilmSource {
+        self.film(contact).source
+    }
 }
 
 mod groups;

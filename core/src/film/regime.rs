@@ -42,21 +42,23 @@ impl Regime {
         let ei = 0.963_556 - 0.2 * ln_m; // ln 2.621
         let rp = 0.252_313_9 + (2.0 / 3.0) * ln_l; // ln 1.287
         let ep = 0.270_790_2 - 0.125 * ln_m + 0.75 * ln_l; // ln 1.311
-        let iso = ri.max(ei);
-        let piezo = rp.min(ep);
-        if !(ln_m.is_finite() && ln_l.is_finite()) {
-            Regime::Dry
-        } else if piezo >= iso {
-            if ep <= rp {
-                Regime::ElasticPiezoviscous
-            } else {
-                Regime::RigidPiezoviscous
-            }
-        } else if ri >= ei {
-            Regime::RigidIsoviscous
-        } else {
-            Regime::ElasticIsoviscous
-        }
+        let iso = crate::math::max(ri, ei);
+        let piezo = crate::math::min(rp, ep);
+        // Branch-free (the step's work must not depend on the data): an index into a table.
+        let piezoviscous = usize::from(piezo >= iso);
+        let elastic_piezo = usize::from(ep <= rp);
+        let rigid_iso = usize::from(ri >= ei);
+        let finite = usize::from(ln_m.is_finite() & ln_l.is_finite());
+        let index =
+            finite * (piezoviscous * (3 + elastic_piezo) + (1 - piezoviscous) * (2 - rigid_iso));
+        const TABLE: [Regime; 5] = [
+            Regime::Dry,
+            Regime::RigidIsoviscous,
+            Regime::ElasticIsoviscous,
+            Regime::RigidPiezoviscous,
+            Regime::ElasticPiezoviscous,
+        ];
+        TABLE.get(index).copied().unwrap_or(Regime::Dry)
     }
 }
 

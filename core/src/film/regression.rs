@@ -10,7 +10,7 @@
 
 use super::groups::LnGroups;
 use super::{ContactInput, Film, FilmModel, FilmSource};
-use crate::math::{exp, pow};
+use crate::math::{exp, pow, select};
 
 /// Exponent of W in the Dowson–Toyoda central film: h_c ∝ Q^−0.10.
 pub const CENTRAL_LOAD_EXPONENT: f32 = -0.10;
@@ -54,6 +54,11 @@ impl FilmModel for Regression {
         "regression"
     }
 
+    fn source_for(&self, _contact: &ContactInput) -> FilmSource {
+        // The formula serves every contact; `film` returns zero for an invalid one.
+        FilmSource::Regression
+    }
+
     fn film(&self, contact: &ContactInput) -> Film {
         let g = LnGroups::new(contact);
         let r = contact.reduced_radius_m;
@@ -62,10 +67,15 @@ impl FilmModel for Regression {
             minimum_m: dowson_higginson_minimum_m(&g, r),
             source: FilmSource::Regression,
         };
-        if contact.is_valid() && film.central_m.is_finite() && film.minimum_m.is_finite() {
-            film
-        } else {
-            Film::ZERO
+        let ok = contact.is_valid() & film.central_m.is_finite() & film.minimum_m.is_finite();
+        Film {
+            central_m: select(ok, film.central_m, 0.0),
+            minimum_m: select(ok, film.minimum_m, 0.0),
+            source: if ok {
+                FilmSource::Regression
+            } else {
+                FilmSource::None
+            },
         }
     }
 }

@@ -116,7 +116,7 @@ impl BearingGeometry {
             Crown::Logarithmic { scale } => {
                 let r = 2.0 * x_m / self.roller_length_m;
                 // Clamp so the ends (|x| → l/2) stay finite.
-                let inside = (1.0 - r * r).max(1.0e-6);
+                let inside = crate::math::max(1.0 - r * r, 1.0e-6);
                 scale * 0.000_35 * self.roller_diameter_m * -crate::math::ln(inside)
             }
         }
