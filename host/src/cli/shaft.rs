@@ -400,9 +400,23 @@ fn cmd_run(a: RunArgs) -> Result<()> {
     output::write_run_csv(&csv, &r).with_context(|| format!("writing {}", csv.display()))?;
     let n_b = model.description.bearings.len();
     for b in 0..n_b {
-        let p = with_suffix(&a.out, &format!("_b{b}_kinematics.csv"));
-        output::write_kinematics_trace(&p, &r, b, omega)
-            .with_context(|| format!("writing {}", p.display()))?;
+        let p = with_suffix(&a.out, &format!("_b{b}_trace.csv"));
+        // hil-sim names bearings by their config file stem and knows the thesis oil.
+        let id = match &model.description.bearings[b].spec {
+            BearingSpec::Roller { config, .. } => config
+                .file_stem()
+                .map_or("roller".into(), |s| s.to_string_lossy().into_owned()),
+            BearingSpec::Linear(_) => "linear".to_string(),
+        };
+        output::write_kinematics_trace(
+            &p,
+            &r,
+            b,
+            omega,
+            (&id, "thesis_oil"),
+            s.dt * s.record_every as f64,
+        )
+        .with_context(|| format!("writing {}", p.display()))?;
         let p = with_suffix(&a.out, &format!("_b{b}_rollers.csv"));
         output::write_roller_csv(&p, &r, b).with_context(|| format!("writing {}", p.display()))?;
     }

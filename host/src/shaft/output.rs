@@ -1,7 +1,7 @@
 //! CSV output of a time response: the full record (probe displacements, velocities,
 //! accelerations; bearing forces, stiffness and roller diagnostics) and, per bearing, the
 //! recorded inner-race kinematics trace (time, displacement, velocity, spin speed) that a
-//! bearing-in-the-loop replay feeds to the core's bearing step.
+//! bearing-in-the-loop replay feeds to the core's bearing step (hil-sim's trace CSV format).
 
 use std::io::Write;
 use std::path::Path;
@@ -65,22 +65,35 @@ pub fn write_run_csv(path: &Path, result: &RunResult) -> std::io::Result<()> {
     w.flush()
 }
 
-/// Writes the inner-race kinematics of bearing `bearing` (probe `probe`): columns `t_s, x_m,
-/// y_m, vx_m_s, vy_m_s, spin_rad_s`.
+/// Writes the inner-race kinematics of bearing `probe` in the trace CSV format of `hil-sim`
+/// (hil-sim/src/trace/csv.rs): `# bearing: <id>`, `# lubricant: <id>`, `# sample_rate_hz: <1/Δt>`,
+/// then `time_s,speed_rad_s,x_m,y_m,vx_m_s,vy_m_s`, time from 0 at the first recorded sample.
 pub fn write_kinematics_trace(
     path: &Path,
     result: &RunResult,
     probe: usize,
     spin_speed: f64,
+    ids: (&str, &str),
+    sample_interval: f64,
 ) -> std::io::Result<()> {
     let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
-    writeln!(w, "t_s,x_m,y_m,vx_m_s,vy_m_s,spin_rad_s")?;
-    for s in &result.samples {
+    writeln!(w, "# bearing: {}", ids.0)?;
+    writeln!(w, "# lubricant: {}", ids.1)?;
+    writeln!(w, "# sample_rate_hz: {}", 1.0 / sample_interval)?;
+    writeln!(w, "# inner-race kinematics from `bearing shaft run`")?;
+    writeln!(w, "time_s,speed_rad_s,x_m,y_m,vx_m_s,vy_m_s")?;
+    for (k, s) in result.samples.iter().enumerate() {
         let p = s.probes[probe];
+        // Time as k·Δt: exact spacing for the replay's gap check.
         writeln!(
             w,
-            "{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}",
-            s.time, p[0][0], p[0][1], p[1][0], p[1][1], spin_speed
+            "{},{},{},{},{},{}",
+            k as f64 * sample_interval,
+            spin_speed as f32,
+            p[0][0] as f32,
+            p[0][1] as f32,
+            p[1][0] as f32,
+            p[1][1] as f32
         )?;
     }
     w.flush()
