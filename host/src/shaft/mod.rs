@@ -9,6 +9,7 @@
 
 pub mod bearing;
 pub mod config;
+pub mod core_bearing;
 pub mod damping;
 pub mod disk;
 pub mod element;

@@ -1,5 +1,5 @@
-//! Adapter from the core's film-coupled roller bearing (`bearing_core::Bearing::step`, through
-//! the host's run-time roller count `crate::rolling`) to the shaft's [`BearingModel`].
+//! Adapter from the core's film-coupled roller bearing (`bearing_core::Bearing::step`, at a
+//! run-time roller count through [`super::core_bearing`]) to the shaft's [`BearingModel`].
 //!
 //! The core works in f32 with the inner-race state and the cage angle; this adapter keeps the
 //! cage angle in f64, advancing it at the cage speed ω_c = (ω/2)(1 − D/d_m) (PHYSICS.md §2)
@@ -10,25 +10,23 @@
 
 use std::path::Path;
 
-use bearing_core::{OperatingState, Regression, StepStatus};
+use bearing_core::OperatingState;
 
 use super::bearing::{
-    BearingError, BearingModel, BearingReaction, BearingState, FilmChoice, RollerDiagnostics,
-    RollerState,
+    BearingError, BearingModel, BearingReaction, BearingState, FilmChoice, RollerState,
 };
+use super::core_bearing::{new_core_bearing, CoreBearing};
 use crate::config::BearingConfig;
-use crate::rolling::{new_bearing, DynBearing, StepSnapshot};
 
 /// The core roller bearing as a shaft bearing.
 pub struct RollerBearing {
-    bearing: Box<dyn DynBearing>,
+    bearing: Box<dyn CoreBearing>,
     film: FilmChoice,
     /// ω_c / ω.
     cage_ratio: f64,
     /// Cage angle at `commit_time` (rad, in [0, 2π)).
     cage_angle: f64,
     commit_time: f64,
-    last_rollers: Vec<RollerState>,
 }
 
 impl RollerBearing {
@@ -47,8 +45,8 @@ impl RollerBearing {
         }
         let (_, params) = BearingConfig::load(path).map_err(|e| BearingError(e.to_string()))?;
         let geometry = *params.geometry();
-        let bearing =
-            new_bearing(params).map_err(|e| BearingError(format!("{}: {e}", path.display())))?;
+        let bearing = new_core_bearing(params)
+            .map_err(|e| BearingError(format!("{}: {e}", path.display())))?;
         let cage_ratio = f64::from(geometry.cage_speed_rad_s(1.0));
         Ok(RollerBearing {
             bearing,
@@ -56,7 +54,6 @@ impl RollerBearing {
             cage_ratio,
             cage_angle: 0.0,
             commit_time: 0.0,
-            last_rollers: Vec::new(),
         })
     }
 
@@ -65,22 +62,6 @@ impl RollerBearing {
         (self.cage_angle + self.cage_ratio * state.spin_speed * (state.time - self.commit_time))
             .rem_euclid(tau)
     }
-}
-
-fn diagnostics(s: &StepSnapshot) -> RollerDiagnostics {
-    let mut d = RollerDiagnostics::default();
-    for r in &s.rollers {
-        d.max_contact_force = d.max_contact_force.max(f64::from(r.load_n));
-        d.max_contact_stiffness = d
-            .max_contact_stiffness
-            .max(f64::from(r.contact_stiffness_n_per_m));
-        if r.load_n > 0.0 {
-            d.max_central_film = d
-                .max_central_film
-                .max(f64::from(r.central_film_in_m.max(r.central_film_out_m)));
-        }
-    }
-    d
 }
 
 impl BearingModel for RollerBearing {
@@ -93,32 +74,18 @@ impl BearingModel for RollerBearing {
             shaft_speed_rad_s: f(state.spin_speed),
             cage_angle_rad: f(self.cage_angle_at(state)),
         };
-        let snap = match self.film {
-            FilmChoice::Dry => self.bearing.step_dry(&os),
-            _ => self.bearing.step(&Regression, &os),
-        };
-        if let StepStatus::Rejected(e) = snap.status {
-            return Err(BearingError(format!(
+        let step = self.bearing.step(self.film, &os).map_err(|e| {
+            BearingError(format!(
                 "the core refused the inner-race state u = {:?} m, v = {:?} m/s: {e}",
                 state.displacement, state.velocity
-            )));
-        }
-        self.last_rollers.clear();
-        self.last_rollers
-            .extend(snap.rollers.iter().map(|r| RollerState {
-                angle: f64::from(r.angle_rad),
-                load: f64::from(r.load_n),
-                central_film_inner: f64::from(r.central_film_in_m),
-                central_film_outer: f64::from(r.central_film_out_m),
-            }));
-        let k = snap.radial_stiffness_n_per_m();
-        let c = snap.damping_n_s_per_m;
+            ))
+        })?;
         let g = |m: [[f32; 2]; 2]| m.map(|row| row.map(f64::from));
         Ok(BearingReaction {
-            force: snap.force_n.map(f64::from),
-            stiffness: g(k),
-            damping: g(c),
-            rollers: Some(diagnostics(&snap)),
+            force: step.force.map(f64::from),
+            stiffness: g(step.stiffness),
+            damping: g(step.damping),
+            rollers: Some(step.diagnostics),
         })
     }
 
@@ -128,7 +95,7 @@ impl BearingModel for RollerBearing {
     }
 
     fn roller_states(&self) -> Option<Vec<RollerState>> {
-        Some(self.last_rollers.clone())
+        Some(self.bearing.rollers())
     }
 }
 
