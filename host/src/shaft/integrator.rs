@@ -186,6 +186,9 @@ pub struct Integrator {
     pub stats: StepStats,
     /// Wall time spent in bearing evaluations since construction (s).
     pub bearing_seconds: f64,
+    /// Bearing displacements and velocities of the last evaluation (where `reactions` hold).
+    eval_u: [f64; 2 * MAX_BEARINGS],
+    eval_w: [f64; 2 * MAX_BEARINGS],
 }
 
 /// Solves the small dense system a·x = b in place (partial pivoting); false when singular.
@@ -309,6 +312,8 @@ impl Integrator {
             reactions: vec![BearingReaction::default(); nb],
             stats: StepStats::default(),
             bearing_seconds: 0.0,
+            eval_u: [0.0; 2 * MAX_BEARINGS],
+            eval_w: [0.0; 2 * MAX_BEARINGS],
         };
         let mut u = [0.0; 2 * MAX_BEARINGS];
         let mut w = [0.0; 2 * MAX_BEARINGS];
@@ -365,6 +370,9 @@ impl Integrator {
         }
         self.stats.bearing_evaluations += 1;
         self.bearing_seconds += clock.elapsed().as_secs_f64();
+        let m = 2 * self.bearings.len();
+        self.eval_u[..m].copy_from_slice(&u[..m]);
+        self.eval_w[..m].copy_from_slice(&w[..m]);
         Ok(())
     }
 
@@ -417,14 +425,44 @@ impl Integrator {
                 w_pred[2 * b + c] = self.v_pred[d[c]];
             }
         }
-        // Warm start: last step's bearing forces.
+        // Predictor: one Newton update from the last evaluation point u_e with the reactions
+        // stored there, linearised as F ≈ F_e − K_e (u − u_e) − C_e (u̇ − u̇_e) — free of any
+        // bearing call, exact for a linear bearing — so the first evaluation of this step is
+        // already close to the solution.
         let mut u = [0.0; 2 * MAX_BEARINGS];
+        let mut tangent = [[0.0; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS];
+        let mut du = [0.0; 2 * MAX_BEARINGS];
         for i in 0..m {
+            tangent[i][i] = 1.0;
             let mut su = 0.0;
             for j in 0..m {
-                su += self.s[(i, j)] * self.fb_prev[j];
+                let (b, c) = (j / 2, j % 2);
+                let r = &self.reactions[b];
+                // Force at u_e with this step's velocity law u̇(u_e) = ṽ + c1 (u_e − ũ).
+                let mut f = r.force[c];
+                for k in 0..2 {
+                    let jk = 2 * b + k;
+                    let w_at = w_pred[jk] + c1 * (self.eval_u[jk] - u_pred[jk]);
+                    f -= r.damping[c][k] * (w_at - self.eval_w[jk]);
+                    tangent[i][jk] +=
+                        (1.0 - alpha) * self.s[(i, j)] * (r.stiffness[c][k] + c1 * r.damping[c][k]);
+                }
+                su += self.s[(i, j)] * f;
             }
-            u[i] = u_lin[i] + (1.0 - alpha) * su;
+            du[i] = -(self.eval_u[i] - u_lin[i] - (1.0 - alpha) * su);
+        }
+        let predicted = solve_small(&mut tangent, &mut du, m);
+        for i in 0..m {
+            u[i] = if predicted && du[i].is_finite() {
+                self.eval_u[i] + du[i]
+            } else {
+                // Fallback: last step's forces on the linear response.
+                u_lin[i]
+                    + (1.0 - alpha)
+                        * (0..m)
+                            .map(|j| self.s[(i, j)] * self.fb_prev[j])
+                            .sum::<f64>()
+            };
         }
         self.stats = StepStats::default();
         let mut converged = nb == 0;
