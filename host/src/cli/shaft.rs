@@ -141,8 +141,8 @@ struct RunArgs {
     /// Spin speed (rpm, ≥ 0).
     #[arg(long)]
     speed_rpm: f64,
-    /// Output prefix: <prefix>.csv, <prefix>_b<i>_kinematics.csv, <prefix>_orbit.png,
-    /// <prefix>_spectrum.png.
+    /// Output prefix: <prefix>.csv, <prefix>_b<i>_rollers.csv, <prefix>_b<i>_trace.csv
+    /// (hil-sim trace format), <prefix>_orbit.png, <prefix>_spectrum.png.
     #[arg(long, default_value = "shaft_run")]
     out: PathBuf,
     /// With --reduce: also run the full model and report the envelope differences.
