@@ -4,3 +4,4 @@
 
 pub mod config;
 pub mod rolling;
+pub mod shaft;

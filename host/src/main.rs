@@ -24,6 +24,8 @@ enum Command {
     Film(cli::film::FilmArgs),
     /// Static equilibrium of a bearing under a radial load (lubricated, and dry with --dry).
     Static(cli::statics::StaticArgs),
+    /// Flexible-shaft simulator: static, modes, campbell, run, sweep.
+    Shaft(cli::shaft::ShaftArgs),
 }
 
 fn main() -> std::process::ExitCode {
@@ -31,6 +33,7 @@ fn main() -> std::process::ExitCode {
     let result: anyhow::Result<()> = match cli.command {
         Command::Film(args) => cli::film::run(args),
         Command::Static(args) => cli::statics::run(args),
+        Command::Shaft(args) => cli::shaft::run(args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

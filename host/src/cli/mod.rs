@@ -2,4 +2,5 @@
 
 pub mod common;
 pub mod film;
+pub mod shaft;
 pub mod statics;
