@@ -311,6 +311,13 @@ mod tests {
         let bad = text.replace("roller_count = 12", "roller_count = 12\nroller_colour = 3");
         let e = BearingConfig::parse(&bad, Path::new("u.toml")).unwrap_err();
         assert!(e.to_string().contains("roller_colour"), "{e}");
+        // The unknown key starts its line: the error points at that line, not the one before.
+        let expected = bad
+            .lines()
+            .position(|l| l.starts_with("roller_colour"))
+            .unwrap()
+            + 1;
+        assert_eq!(e.line, Some(expected), "{e}");
         let nan = text.replace("viscosity_pa_s = 0.08", "viscosity_pa_s = nan");
         let e = BearingConfig::parse(&nan, Path::new("n.toml")).unwrap_err();
         assert_eq!(e.field.as_deref(), Some("viscosity_pa_s"), "{e}");
