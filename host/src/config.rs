@@ -166,9 +166,11 @@ impl BearingConfig {
     /// Parse and validate configuration `text`; `path` is only used in errors.
     pub fn parse(text: &str, path: &Path) -> Result<(Self, BearingParams), ConfigError> {
         let config: BearingConfig = toml::from_str(text).map_err(|e| {
+            // 1-based line of the span's start: the newlines before it, plus one
+            // (`lines().count()` is one short when the span starts a line).
             let line = e
                 .span()
-                .map(|s| text[..s.start.min(text.len())].lines().count().max(1));
+                .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1);
             ConfigError {
                 path: path.to_owned(),
                 line,
