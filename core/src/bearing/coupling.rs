@@ -30,7 +30,7 @@ use crate::film::{ContactInput, Regime};
 use crate::math::{exp, ln, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step.
-pub const INNER_ITERATIONS: usize = 2;
+pub const INNER_ITERATIONS: usize = 3;
 /// Newton steps of the re-solve after the second slice pass.
 pub const REFINE_ITERATIONS: usize = 2;
 
