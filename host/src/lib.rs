@@ -1,1 +1,2 @@
 //! Host side of the bearing project (std, f64 where it is a reference).
+pub mod ehl;
