@@ -8,18 +8,27 @@ use clap::{Parser, Subcommand};
 mod cli;
 
 #[derive(Parser)]
-#[command(name = "bearing", version, about = "Lubricated roller-bearing model: EHL film, bearing forces, shaft simulation")]
+#[command(
+    name = "bearing",
+    version,
+    about = "Lubricated roller-bearing model: EHL film, bearing forces, shaft simulation"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Full numerical EHL line-contact solver.
+    Ehl(cli::ehl::EhlArgs),
+}
 
 fn main() -> std::process::ExitCode {
     let cli = Cli::parse();
-    let result: anyhow::Result<()> = match cli.command {};
+    let result: anyhow::Result<()> = match cli.command {
+        Command::Ehl(args) => cli::ehl::run(args),
+    };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,
         Err(err) => {

@@ -59,11 +59,21 @@ impl ContactCase {
         pressure_viscosity_pa_inv: f64,
         viscosity_pa_s: f64,
     ) -> Result<Self, EhlError> {
-        check("load_per_length_n_per_m", load_per_length_n_per_m, 1e-3, 1e9)?;
+        check(
+            "load_per_length_n_per_m",
+            load_per_length_n_per_m,
+            1e-3,
+            1e9,
+        )?;
         check("entrainment_speed_m_s", entrainment_speed_m_s, 1e-6, 1e3)?;
         check("reduced_radius_m", reduced_radius_m, 1e-6, 10.0)?;
         check("reduced_modulus_pa", reduced_modulus_pa, 1e6, 1e13)?;
-        check("pressure_viscosity_pa_inv", pressure_viscosity_pa_inv, 0.0, 1e-6)?;
+        check(
+            "pressure_viscosity_pa_inv",
+            pressure_viscosity_pa_inv,
+            0.0,
+            1e-6,
+        )?;
         check("viscosity_pa_s", viscosity_pa_s, 1e-5, 1e4)?;
         Ok(Self {
             load_per_length_n_per_m,
@@ -130,7 +140,8 @@ impl ContactCase {
     }
     /// Maximum Hertz pressure p_h = √(wE'/(2πR)), Pa.
     pub fn hertz_pressure_pa(&self) -> f64 {
-        (self.load_per_length_n_per_m * self.reduced_modulus_pa / (2.0 * PI * self.reduced_radius_m))
+        (self.load_per_length_n_per_m * self.reduced_modulus_pa
+            / (2.0 * PI * self.reduced_radius_m))
             .sqrt()
     }
     /// Reynolds coefficient λ̄ = 12η₀u_mR²/(b³p_h) of PHYSICS.md §5.2.

@@ -81,8 +81,13 @@ mod tests {
     #[test]
     fn hertz_pressure_gives_closed_form_deflection() {
         let n = 2001;
-        let nodes: Vec<f64> = (0..n).map(|i| -1.0 + 2.0 * i as f64 / (n - 1) as f64).collect();
-        let p: Vec<f64> = nodes.iter().map(|x| (1.0 - x * x).max(0.0).sqrt()).collect();
+        let nodes: Vec<f64> = (0..n)
+            .map(|i| -1.0 + 2.0 * i as f64 / (n - 1) as f64)
+            .collect();
+        let p: Vec<f64> = nodes
+            .iter()
+            .map(|x| (1.0 - x * x).max(0.0).sqrt())
+            .collect();
         let mut row = vec![0.0; n];
         for &x in &[0.0, 0.3, -0.77, 0.95] {
             kernel_row(&nodes, x, &mut row);

@@ -10,7 +10,8 @@
 //! Method ([`newton`]): full Newton on (P, H₀) with the load row — the approach of Okamura and
 //! Houpert & Hamrock (1986), which reached 4.8 GPa — with the cavitation handled by a primal–dual
 //! active set (a semismooth Newton method), dense LU from `faer`, a backtracking line search,
-//! a Hertz start, and continuation in speed when the direct start fails. Why this rather than
+//! a Hertz start, and continuation in the pressure–viscosity coefficient when the direct start
+//! fails. Why this rather than
 //! multigrid: the line contact has only a few hundred unknowns, a direct Newton converges
 //! quadratically in ~5–15 iterations independent of load, and a dense LU of that size costs a few
 //! milliseconds — well inside the budget — while Gauss–Seidel-type relaxations degrade at high
@@ -100,7 +101,7 @@ pub struct SolverOptions {
     pub pressure_tolerance: f64,
     /// Relative load-balance tolerance (PHYSICS.md §5.2: 10⁻³).
     pub load_tolerance: f64,
-    /// Allow continuation in speed when the direct Hertz start fails.
+    /// Allow continuation in α when the direct Hertz start fails.
     pub continuation: bool,
 }
 
@@ -116,7 +117,7 @@ impl Default for SolverOptions {
             elastic: true,
             x_start: -4.5,
             x_end: 1.5,
-            max_iterations: 60,
+            max_iterations: 40,
             pressure_tolerance: 1e-5,
             load_tolerance: 1e-3,
             continuation: true,
@@ -234,7 +235,7 @@ impl Solver {
         let report = if direct.converged || !self.opts.continuation {
             direct
         } else {
-            let (r, it) = self.continue_in_speed(case, &limits);
+            let (r, it) = self.continue_in_alpha(case, &limits);
             iterations += it;
             r
         };
@@ -251,58 +252,64 @@ impl Solver {
         ))
     }
 
-    /// Continuation in entrainment speed: solve at a faster (thicker-film, less sharply spiked)
-    /// speed from the Hertz start, then step the speed factor down to 1 on a log scale, each
-    /// step warm-started from the last; a failed step is retried with half the step.
-    fn continue_in_speed(&mut self, case: &ContactCase, limits: &Limits) -> (NewtonReport, usize) {
+    /// Continuation in the pressure–viscosity coefficient: solve a mildly piezoviscous case
+    /// (α scaled so that α p_h ≈ 4) from the Hertz start, then raise α to its value in
+    /// geometric steps, each warm-started from the last; a failed step is retried with half the
+    /// step. (Continuation in speed was tried first: it moves L = G(2U)^¼ the wrong way.)
+    fn continue_in_alpha(&mut self, case: &ContactCase, limits: &Limits) -> (NewtonReport, usize) {
         let mut iterations = 0;
-        let mut last = None;
-        for &start_log in &[1.0, 2.0, 3.0] {
-            self.start(case, 10f64.powf(start_log));
-            let r = self.ws.run(&self.problem(case, 10f64.powf(start_log)), limits);
+        let target = case.pressure_viscosity_pa_inv * case.hertz_pressure_pa();
+        let mut last = NewtonReport {
+            converged: false,
+            iterations: 0,
+            pressure_change: f64::NAN,
+            load_error: f64::NAN,
+            reynolds_residual: f64::NAN,
+            reason: "continuation failed",
+        };
+        if target <= 4.0 {
+            return (last, 0);
+        }
+        let with_alpha = |factor: f64| {
+            let mut c = *case;
+            c.pressure_viscosity_pa_inv *= factor;
+            c
+        };
+        let mut level = (4.0 / target).ln();
+        let c0 = with_alpha(level.exp());
+        self.start(&c0, 1.0);
+        let r = self.ws.run(&self.problem(&c0, 1.0), limits);
+        iterations += r.iterations;
+        if !r.converged {
+            return (r, iterations);
+        }
+        let mut step = 0.6f64;
+        let mut saved_p = self.ws.p.clone();
+        let mut saved_h0 = self.ws.h0;
+        while level < 0.0 {
+            let next = (level + step).min(0.0);
+            let c = with_alpha(next.exp());
+            let r = self.ws.run(&self.problem(&c, 1.0), limits);
             iterations += r.iterations;
-            if !r.converged {
-                last = Some(r);
-                continue;
-            }
-            let mut level = start_log;
-            let mut step = 0.5f64.min(level);
-            let mut saved_p = self.ws.p.clone();
-            let mut saved_h0 = self.ws.h0;
-            while level > 0.0 {
-                let next = (level - step).max(0.0);
-                let r = self.ws.run(&self.problem(case, 10f64.powf(next)), limits);
-                iterations += r.iterations;
-                if r.converged {
-                    level = next;
-                    saved_p.copy_from_slice(&self.ws.p);
-                    saved_h0 = self.ws.h0;
-                    step = (step * 1.5).min(1.0);
-                    if level == 0.0 {
-                        return (r, iterations);
-                    }
-                } else {
-                    self.ws.p.copy_from_slice(&saved_p);
-                    self.ws.h0 = saved_h0;
-                    step *= 0.5;
-                    last = Some(r);
-                    if step < 0.02 {
-                        break;
-                    }
+            if r.converged {
+                level = next;
+                saved_p.copy_from_slice(&self.ws.p);
+                saved_h0 = self.ws.h0;
+                step = (step * 1.5).min(1.2);
+                if level == 0.0 {
+                    return (r, iterations);
+                }
+            } else {
+                self.ws.p.copy_from_slice(&saved_p);
+                self.ws.h0 = saved_h0;
+                step *= 0.5;
+                last = r;
+                if step < 0.02 {
+                    break;
                 }
             }
         }
-        (
-            last.unwrap_or(NewtonReport {
-                converged: false,
-                iterations,
-                pressure_change: f64::NAN,
-                load_error: f64::NAN,
-                reynolds_residual: f64::NAN,
-                reason: "continuation failed",
-            }),
-            iterations,
-        )
+        (last, iterations)
     }
 }
 

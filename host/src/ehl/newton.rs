@@ -102,6 +102,12 @@ pub struct NewtonWorkspace {
     sigma: Vec<f64>,
     jt: Mat<f64>,
     rhs: Mat<f64>,
+    /// Simplified Newton correction of a trial point (same LU).
+    rhs2: Mat<f64>,
+    /// Newton step Δ of the current iteration.
+    step: Vec<f64>,
+    /// Row equilibration factors of the current Jacobian.
+    row_scale: Vec<f64>,
     perm: Vec<usize>,
     perm_inv: Vec<usize>,
     stack: MemBuffer,
@@ -156,6 +162,9 @@ impl NewtonWorkspace {
             sigma: vec![0.0; n],
             jt: Mat::zeros(unknowns, unknowns),
             rhs: Mat::zeros(unknowns, 1),
+            rhs2: Mat::zeros(unknowns, 1),
+            step: vec![0.0; unknowns],
+            row_scale: vec![1.0; unknowns],
             perm: vec![0; unknowns],
             perm_inv: vec![0; unknowns],
             stack: MemBuffer::new(req),
@@ -191,7 +200,11 @@ impl NewtonWorkspace {
     /// Film at X = 0 for the current state.
     pub fn central_film(&self, elastic: bool) -> f64 {
         let defl = if elastic {
-            self.kernel_center.iter().zip(&self.p).map(|(k, p)| k * p).sum()
+            self.kernel_center
+                .iter()
+                .zip(&self.p)
+                .map(|(k, p)| k * p)
+                .sum()
         } else {
             0.0
         };
@@ -344,43 +357,71 @@ impl NewtonWorkspace {
             if !self.assemble_and_solve(prob) {
                 return self.report(false, iter, pressure_change, load_err, "singular Jacobian");
             }
-            // Backtracking line search on the merit.
-            let mut alpha = 1.0;
-            let mut accepted = None;
-            for _ in 0..12 {
+            // Damping by Deuflhard's restricted natural monotonicity test (affine invariant, so
+            // indifferent to the 20-decade spread of ε): accept α when the simplified correction
+            // Δ̄ = −J⁻¹F(z + αΔ) satisfies ‖Δ̄‖ ≤ (1 − α/4)‖Δ‖; otherwise shrink α to the
+            // predicted μ = ½α²‖Δ‖/‖Δ̄ − (1−α)Δ‖ (Deuflhard, *Newton Methods for Nonlinear
+            // Problems*, 2004, §3.3, NLEQ-ERR).
+            for r in 0..unknowns {
+                self.step[r] = self.rhs[(r, 0)];
+            }
+            let step_norm = self.step_norm(|r| self.step[r]);
+            let mut alpha: f64 = 1.0;
+            let mut accepted = false;
+            for _ in 0..20 {
                 for i in 1..n - 1 {
-                    self.p_trial[i] = self.p[i] + alpha * self.rhs[(i - 1, 0)];
+                    self.p_trial[i] = self.p[i] + alpha * self.step[i - 1];
                 }
                 self.p_trial[0] = 0.0;
                 self.p_trial[n - 1] = 0.0;
-                self.h0_trial = self.h0 + alpha * self.rhs[(unknowns - 1, 0)];
-                if let Some(m) = self.evaluate_trial(prob) {
-                    if m <= (1.0 - 1e-4 * alpha) * merit || m < 1e-20 {
-                        accepted = Some(m);
+                self.h0_trial = self.h0 + alpha * self.step[unknowns - 1];
+                if self.evaluate_trial(prob).is_none() {
+                    alpha *= 0.5;
+                    if alpha < 1e-4 {
                         break;
                     }
+                    continue;
                 }
-                alpha *= 0.5;
-            }
-            let new_merit = match accepted {
-                Some(m) => {
-                    stalls = 0;
-                    m
-                }
-                None => {
-                    // No decrease: take the smallest step anyway (nonmonotone), a few times.
-                    stalls += 1;
-                    if stalls > 4 || !self.h_trial.iter().all(|&v| v > 0.0) {
-                        return self.report(false, iter, pressure_change, load_err, "line search failed");
-                    }
-                    match self.evaluate_trial(prob) {
-                        Some(m) => m,
-                        None => {
-                            return self.report(false, iter, pressure_change, load_err, "film not positive")
+                self.simplified_correction();
+                let bar_norm = self.step_norm(|r| self.rhs2[(r, 0)]);
+                if std::env::var_os("EHL_TRACE2").is_some() {
+                    let (mut im, mut vm) = (0, 0.0f64);
+                    let (mut jm, mut wm) = (0, 0.0f64);
+                    for r in 0..unknowns - 1 {
+                        if self.step[r].abs() > vm {
+                            vm = self.step[r].abs();
+                            im = r;
+                        }
+                        if self.rhs2[(r, 0)].abs() > wm {
+                            wm = self.rhs2[(r, 0)].abs();
+                            jm = r;
                         }
                     }
+                    eprintln!("  a={alpha:.3e} |d|={step_norm:.3e} |bar|={bar_norm:.3e} maxd {vm:.3e} at X={:.3} (P={:.3}) maxbar {wm:.3e} at X={:.3} dH0={:.3e}", self.nodes[im+1], self.p[im+1], self.nodes[jm+1], self.step[unknowns-1]);
                 }
-            };
+                if bar_norm <= (1.0 - 0.25 * alpha) * step_norm || bar_norm < 1e-12 {
+                    accepted = true;
+                    break;
+                }
+                let dev = self.step_norm(|r| self.rhs2[(r, 0)] - (1.0 - alpha) * self.step[r]);
+                let mu = 0.5 * alpha * alpha * step_norm / dev.max(1e-300);
+                alpha = mu.min(0.5 * alpha).max(0.1 * alpha);
+                if alpha < 1e-4 {
+                    break;
+                }
+            }
+            if !accepted {
+                stalls += 1;
+                if stalls > 3 || self.evaluate_trial(prob).is_none() {
+                    return self.report(false, iter, pressure_change, load_err, "damping failed");
+                }
+            } else {
+                stalls = 0;
+            }
+            let new_merit = self.merit(
+                &self.p_trial,
+                (self.load_integral(&self.p_trial) - FRAC_PI_2) / FRAC_PI_2,
+            );
             let mut dsum = 0.0;
             let mut psum = 0.0;
             for i in 0..n {
@@ -408,7 +449,13 @@ impl NewtonWorkspace {
             }
         }
         let _ = merit;
-        self.report(false, limits.max_iterations, pressure_change, load_err, "iteration limit")
+        self.report(
+            false,
+            limits.max_iterations,
+            pressure_change,
+            load_err,
+            "iteration limit",
+        )
     }
 
     fn report(
@@ -469,6 +516,7 @@ impl NewtonWorkspace {
             if self.active[i] {
                 col[r] = 1.0;
                 self.rhs[(r, 0)] = -self.p[i];
+                self.row_scale[r] = 1.0;
                 continue;
             }
             let x = &self.nodes;
@@ -533,6 +581,7 @@ impl NewtonWorkspace {
             };
             col.iter_mut().for_each(|v| *v *= s);
             self.rhs[(r, 0)] = -self.resid[i] * s;
+            self.row_scale[r] = s;
         }
         // Load row.
         {
@@ -547,7 +596,48 @@ impl NewtonWorkspace {
             }
             col[last] = 0.0;
             self.rhs[(last, 0)] = -(self.load_integral(&self.p) - FRAC_PI_2) / wmax;
+            self.row_scale[last] = 1.0 / wmax;
         }
+    }
+
+    /// Weighted norm of an unknown-space vector (P entries as they are, H₀ relative to the
+    /// central film scale).
+    fn step_norm(&self, v: impl Fn(usize) -> f64) -> f64 {
+        let unknowns = self.nodes.len() - 1;
+        let mut acc = 0.0;
+        for r in 0..unknowns - 1 {
+            acc += v(r) * v(r);
+        }
+        let h = v(unknowns - 1) * self.scale;
+        (acc + h * h).sqrt()
+    }
+
+    /// Simplified Newton correction Δ̄ = −J⁻¹F(trial) with the current LU and the same row
+    /// types and scales as J (trial residuals must be evaluated); left in `rhs2`.
+    fn simplified_correction(&mut self) {
+        let n = self.nodes.len();
+        let unknowns = n - 1;
+        for i in 1..n - 1 {
+            let r = i - 1;
+            let f = if self.active[i] {
+                self.p_trial[i]
+            } else {
+                self.resid[i] * self.row_scale[r]
+            };
+            self.rhs2[(r, 0)] = -f;
+        }
+        self.rhs2[(unknowns - 1, 0)] =
+            -(self.load_integral(&self.p_trial) - FRAC_PI_2) * self.row_scale[unknowns - 1];
+        let perm = faer::perm::PermRef::new_checked(&self.perm, &self.perm_inv, unknowns);
+        let mut stack = MemStack::new(&mut self.stack);
+        solve::solve_transpose_in_place(
+            self.jt.as_ref(),
+            self.jt.as_ref(),
+            perm,
+            self.rhs2.as_mut(),
+            Par::Seq,
+            &mut stack,
+        );
     }
 }
 
@@ -605,7 +695,11 @@ mod tests {
             for r in 0..unknowns {
                 let fd = (f_plus[r] - f_minus[r]) / (2.0 * step);
                 let an = ws.jt[(c, r)];
-                let scale = ws.jt.col_as_slice(r).iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                let scale = ws
+                    .jt
+                    .col_as_slice(r)
+                    .iter()
+                    .fold(0.0f64, |a, v| a.max(v.abs()));
                 worst = worst.max((fd - an).abs() / scale);
             }
         }

@@ -81,7 +81,9 @@ impl EhlSolution {
                 imax = i;
             }
         }
-        let exit = (imax..p.len()).find(|&i| p[i] <= 0.0).unwrap_or(p.len() - 1);
+        let exit = (imax..p.len())
+            .find(|&i| p[i] <= 0.0)
+            .unwrap_or(p.len() - 1);
         Self {
             case: *case,
             central_film_m: ws.central_film(opts.elastic) * scale,
@@ -109,7 +111,10 @@ impl EhlSolution {
 
     /// Writes the profile as CSV: x_m, x_over_b, pressure_pa, p_over_ph, hertz_pa, film_m.
     pub fn write_profile_csv<W: Write>(&self, mut out: W) -> std::io::Result<()> {
-        writeln!(out, "x_m,x_over_b,pressure_pa,p_over_ph,hertz_pressure_pa,film_m")?;
+        writeln!(
+            out,
+            "x_m,x_over_b,pressure_pa,p_over_ph,hertz_pressure_pa,film_m"
+        )?;
         let scale = self.case.film_scale_m();
         for i in 0..self.profile.x.len() {
             let x = self.profile.x[i];
