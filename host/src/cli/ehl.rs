@@ -75,6 +75,7 @@ struct CaseArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 struct SolveArgs {
     #[command(flatten)]
     case: CaseArgs,
@@ -90,6 +91,7 @@ struct SolveArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 struct ConvergenceArgs {
     #[command(flatten)]
     case: CaseArgs,

@@ -232,6 +232,22 @@ impl NewtonWorkspace {
         self.h0 = central_guess - c0;
     }
 
+    /// Sets the start by linear interpolation of a previous solution (`x`, `p`) and its H₀.
+    pub fn start_from(&mut self, x: &[f64], p: &[f64], h0: f64) {
+        let mut k = 0;
+        for (pi, xi) in self.p.iter_mut().zip(&self.nodes) {
+            while k + 2 < x.len() && x[k + 1] < *xi {
+                k += 1;
+            }
+            let t = ((xi - x[k]) / (x[k + 1] - x[k])).clamp(0.0, 1.0);
+            *pi = (p[k] + t * (p[k + 1] - p[k])).max(0.0);
+        }
+        let n = self.p.len();
+        self.p[0] = 0.0;
+        self.p[n - 1] = 0.0;
+        self.h0 = h0;
+    }
+
     /// Node properties (ρ̄, ε and derivatives) for pressure `p` and film `h`.
     fn properties(&mut self, prob: &Problem, use_trial: bool) {
         let (p, h) = if use_trial {
