@@ -139,7 +139,8 @@ impl CaseArgs {
         if groups[0] {
             let v = need(&si)?;
             for (i, (name, _)) in si.iter().enumerate() {
-                if !(v[i].is_finite() && v[i] > 0.0) && !(*name == "--alpha" && v[i] == 0.0) {
+                let allowed_zero = *name == "--alpha" && v[i] == 0.0;
+                if !(v[i].is_finite() && v[i] > 0.0 || allowed_zero) {
                     bail!("{name} = {} is invalid: must be finite and > 0", v[i]);
                 }
             }

@@ -29,6 +29,7 @@
 
 pub mod case;
 pub mod convergence;
+mod driver;
 pub mod formulas;
 pub mod grid;
 pub mod kernel;
@@ -40,13 +41,11 @@ pub mod solution;
 mod tests_reference;
 
 pub use case::ContactCase;
+pub use driver::Solver;
 pub use rheology::ViscosityLaw;
 pub use solution::{EhlSolution, Profile};
 
 use grid::GridSpec;
-use newton::{Limits, NewtonReport, NewtonWorkspace, Problem};
-use rheology::Rheology;
-use std::time::Instant;
 
 /// Errors of the EHL solver.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -137,7 +136,7 @@ impl SolverOptions {
         }
     }
 
-    fn validate(&self) -> Result<(), EhlError> {
+    pub(crate) fn validate(&self) -> Result<(), EhlError> {
         let bad = |field, message: &str| {
             Err(EhlError::InvalidOption {
                 field,
@@ -165,199 +164,11 @@ impl SolverOptions {
         Ok(())
     }
 
-    fn grid_spec(&self) -> GridSpec {
-        let mut spec = GridSpec::with_intervals(self.nodes - 1);
+    fn grid_spec(&self, nodes: usize) -> GridSpec {
+        let mut spec = GridSpec::with_intervals(nodes - 1);
         spec.x_start = self.x_start;
         spec.x_end = self.x_end;
         spec
-    }
-}
-
-/// Reusable solver: grid, deflection matrix and all work storage are built once for the
-/// options and reused by every [`Solver::solve`] (dataset generation, HIL re-solves).
-pub struct Solver {
-    opts: SolverOptions,
-    ws: NewtonWorkspace,
-}
-
-impl Solver {
-    /// Builds the workspace (grid, O(N²) kernel, N² Jacobian storage).
-    pub fn new(opts: SolverOptions) -> Result<Self, EhlError> {
-        opts.validate()?;
-        Ok(Self {
-            ws: NewtonWorkspace::new(&opts.grid_spec()),
-            opts,
-        })
-    }
-
-    /// The options this solver was built with.
-    pub fn options(&self) -> &SolverOptions {
-        &self.opts
-    }
-
-    /// Grid node coordinates X = x/b.
-    pub fn nodes(&self) -> &[f64] {
-        &self.ws.nodes
-    }
-
-    fn problem(&self, case: &ContactCase, speed_factor: f64) -> Problem {
-        Problem {
-            lambda_bar: case.lambda_bar() * speed_factor,
-            rheology: Rheology::new(
-                self.opts.viscosity,
-                self.opts.compressible,
-                case.hertz_pressure_pa(),
-                case.pressure_viscosity_pa_inv,
-                case.viscosity_pa_s,
-            ),
-            elastic: self.opts.elastic,
-        }
-    }
-
-    fn limits(&self) -> Limits {
-        Limits {
-            max_iterations: self.opts.max_iterations,
-            pressure_tolerance: self.opts.pressure_tolerance,
-            load_tolerance: self.opts.load_tolerance,
-        }
-    }
-
-    /// Start from Hertz with H(0) from Moes' formula at the (possibly scaled) speed.
-    fn start(&mut self, case: &ContactCase, speed_factor: f64) {
-        let mut c = *case;
-        c.entrainment_speed_m_s *= speed_factor;
-        let guess = if self.opts.elastic {
-            formulas::moes_central_film_m(&c)
-        } else {
-            formulas::martin_gap_m(&c)
-        };
-        self.ws
-            .start_hertz(self.opts.elastic, guess / case.film_scale_m());
-    }
-
-    /// Solves one case. Unconverged ⇒ [`EhlError::NotConverged`], never a result.
-    pub fn solve(&mut self, case: &ContactCase) -> Result<EhlSolution, EhlError> {
-        let t0 = Instant::now();
-        let limits = self.limits();
-        self.start(case, 1.0);
-        let prob = self.problem(case, 1.0);
-        let direct = self.ws.run(&prob, &limits);
-        let mut iterations = direct.iterations;
-        let report = if direct.converged || !self.opts.continuation {
-            direct
-        } else {
-            let (r, it) = self.continue_in_alpha(case, &limits);
-            iterations += it;
-            r
-        };
-        if !report.converged {
-            return Err(not_converged(&report, iterations));
-        }
-        Ok(EhlSolution::from_state(
-            case,
-            &self.opts,
-            &self.ws,
-            iterations,
-            &report,
-            t0.elapsed().as_secs_f64(),
-        ))
-    }
-
-    /// Solves `case` warm-started from a previous solution of the same case (e.g. on a coarser
-    /// grid), falling back to [`Solver::solve`] if that does not converge.
-    pub fn solve_from(
-        &mut self,
-        case: &ContactCase,
-        previous: &EhlSolution,
-    ) -> Result<EhlSolution, EhlError> {
-        let t0 = Instant::now();
-        self.ws.start_from(
-            &previous.profile.x,
-            &previous.profile.pressure,
-            previous.separation_dimensionless,
-        );
-        let report = self.ws.run(&self.problem(case, 1.0), &self.limits());
-        if !report.converged {
-            return self.solve(case);
-        }
-        Ok(EhlSolution::from_state(
-            case,
-            &self.opts,
-            &self.ws,
-            report.iterations,
-            &report,
-            t0.elapsed().as_secs_f64(),
-        ))
-    }
-
-    /// Continuation in the pressure–viscosity coefficient: solve a mildly piezoviscous case
-    /// (α scaled so that α p_h ≈ 4) from the Hertz start, then raise α to its value in
-    /// geometric steps, each warm-started from the last; a failed step is retried with half the
-    /// step. (Continuation in speed was tried first: it moves L = G(2U)^¼ the wrong way.)
-    fn continue_in_alpha(&mut self, case: &ContactCase, limits: &Limits) -> (NewtonReport, usize) {
-        let mut iterations = 0;
-        let target = case.pressure_viscosity_pa_inv * case.hertz_pressure_pa();
-        let mut last = NewtonReport {
-            converged: false,
-            iterations: 0,
-            pressure_change: f64::NAN,
-            load_error: f64::NAN,
-            reynolds_residual: f64::NAN,
-            reason: "continuation failed",
-        };
-        if target <= 4.0 {
-            return (last, 0);
-        }
-        let with_alpha = |factor: f64| {
-            let mut c = *case;
-            c.pressure_viscosity_pa_inv *= factor;
-            c
-        };
-        let mut level = (4.0 / target).ln();
-        let c0 = with_alpha(level.exp());
-        self.start(&c0, 1.0);
-        let r = self.ws.run(&self.problem(&c0, 1.0), limits);
-        iterations += r.iterations;
-        if !r.converged {
-            return (r, iterations);
-        }
-        let mut step = 0.6f64;
-        let mut saved_p = self.ws.p.clone();
-        let mut saved_h0 = self.ws.h0;
-        while level < 0.0 {
-            let next = (level + step).min(0.0);
-            let c = with_alpha(next.exp());
-            let r = self.ws.run(&self.problem(&c, 1.0), limits);
-            iterations += r.iterations;
-            if r.converged {
-                level = next;
-                saved_p.copy_from_slice(&self.ws.p);
-                saved_h0 = self.ws.h0;
-                step = (step * 1.5).min(1.2);
-                if level == 0.0 {
-                    return (r, iterations);
-                }
-            } else {
-                self.ws.p.copy_from_slice(&saved_p);
-                self.ws.h0 = saved_h0;
-                step *= 0.5;
-                last = r;
-                if step < 0.02 {
-                    break;
-                }
-            }
-        }
-        (last, iterations)
-    }
-}
-
-fn not_converged(r: &NewtonReport, iterations: usize) -> EhlError {
-    EhlError::NotConverged {
-        reason: r.reason,
-        iterations,
-        pressure_change: r.pressure_change,
-        load_error: r.load_error,
-        reynolds_residual: r.reynolds_residual,
     }
 }
 
