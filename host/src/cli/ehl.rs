@@ -200,6 +200,7 @@ fn solve(a: SolveArgs) -> Result<()> {
             "hertz_pressure_pa": sol.hertz_pressure_pa,
             "hertz_half_width_m": sol.hertz_half_width_m,
             "exit_x_over_b": sol.exit_x,
+            "domain_x_over_b": [sol.profile.x[0], sol.profile.x[sol.profile.x.len() - 1]],
             "iterations": sol.iterations,
             "nodes": sol.nodes,
             "wall_time_s": sol.wall_time_s,

@@ -99,9 +99,28 @@ impl Solver {
         self.levels[k].start_hertz(elastic, guess / case.film_scale_m());
     }
 
+    /// Domain stretch for a case: the fully flooded inlet must reach about 10·√H_c (in units
+    /// of b; there the rigid-inlet pressure of Martin's solution has decayed to ~0.3 % of its
+    /// peak, since it falls as (x/√(2Rh))⁻³), which exceeds 4.5 b when the film is thick
+    /// compared with the elastic deflection (M ≲ 3). Below that the configured domain is used
+    /// unchanged; above, the whole grid is stretched by s (PHYSICS.md §5.2 fixes [−4.5, 1.5]
+    /// for the elastic regime only).
+    fn domain_scale(&self, case: &ContactCase) -> f64 {
+        let h_c = if self.opts.elastic {
+            formulas::moes_central_film_m(case)
+        } else {
+            formulas::martin_gap_m(case)
+        } / case.film_scale_m();
+        (10.0 * h_c.sqrt() / -self.opts.x_start).clamp(1.0, 20.0)
+    }
+
     /// Solves one case. Unconverged ⇒ [`EhlError::NotConverged`], never a result.
     pub fn solve(&mut self, case: &ContactCase) -> Result<EhlSolution, EhlError> {
         let t0 = Instant::now();
+        let scale = self.domain_scale(case);
+        self.levels
+            .iter_mut()
+            .for_each(|l| l.set_domain_scale(scale));
         let mut iterations = 0;
         let mut report = self.solve_from_hertz(0, case, &mut iterations);
         let last = self.levels.len() - 1;
@@ -132,6 +151,10 @@ impl Solver {
         previous: &EhlSolution,
     ) -> Result<EhlSolution, EhlError> {
         let t0 = Instant::now();
+        let scale = self.domain_scale(case);
+        self.levels
+            .iter_mut()
+            .for_each(|l| l.set_domain_scale(scale));
         let k = self.levels.len() - 1;
         self.levels[k].start_from(
             &previous.profile.x,

