@@ -7,17 +7,19 @@
 //! deflection integrated exactly over each piecewise-linear element ([`kernel`]), the load
 //! balance ∫P dX = π/2, and the Reynolds cavitation condition as the complementarity P ≥ 0.
 //!
-//! Method ([`newton`]): full Newton on (P, H₀) with the load row — the approach of Okamura and
-//! Houpert & Hamrock (1986), which reached 4.8 GPa — with the cavitation handled by a primal–dual
-//! active set (a semismooth Newton method), dense LU from `faer`, a backtracking line search,
-//! a Hertz start, and continuation in the pressure–viscosity coefficient when the direct start
-//! fails. Why this rather than
-//! multigrid: the line contact has only a few hundred unknowns, a direct Newton converges
-//! quadratically in ~5–15 iterations independent of load, and a dense LU of that size costs a few
-//! milliseconds — well inside the budget — while Gauss–Seidel-type relaxations degrade at high
-//! load (PHYSICS.md §5.2). Scaling: P itself is the unknown and η̄ enters only through
-//! ε ∝ exp(−ln η̄), which underflows harmlessly in the contact; rows are equilibrated before the
-//! factorisation, so η̄ spanning 20 (Roelands) or 100 (Barus) decades is harmless.
+//! Method ([`newton`], [`driver`]): full Newton on (P, H₀) with the load row — the approach of
+//! Okamura and Houpert & Hamrock (1986), which reached 4.8 GPa — with the cavitation handled by a
+//! semismooth (primal–dual active-set) Newton method, dense LU from `faer`, Deuflhard's
+//! natural-monotonicity damping, chord reuse of the LU once the iteration contracts, grid
+//! sequencing (101 → 201 → … → N nodes, each level started from the previous one), a Hertz start
+//! with H(0) from Moes' formula, and continuation in the pressure–viscosity coefficient when the
+//! direct start fails. Why this rather than multigrid: the line contact has only hundreds of
+//! unknowns, Newton converges quadratically independent of load, and the dense LU of that size
+//! costs milliseconds, while Gauss–Seidel-type relaxations degrade at high load (PHYSICS.md
+//! §5.2). Scaling: P itself is the unknown and η̄ enters only through ε ∝ exp(−ln η̄), which
+//! underflows harmlessly in the contact; rows are equilibrated before the factorisation, so η̄
+//! spanning 20 (Roelands) or 100 (Barus) decades is harmless. Thick films (M ≲ 3) get a
+//! stretched domain so the inlet stays fully flooded ([`driver`]).
 //!
 //! Failure is explicit: [`solve`] returns [`EhlError::NotConverged`] with the residuals unless
 //! both PHYSICS.md §5.2 criteria (Σ|ΔP|/ΣP ≤ 10⁻⁵ after a full Newton step with an unchanged
@@ -29,7 +31,7 @@
 
 pub mod case;
 pub mod convergence;
-mod driver;
+pub mod driver;
 pub mod formulas;
 pub mod grid;
 pub mod kernel;

@@ -14,22 +14,27 @@
 //!
 //! Cavitation (Reynolds condition) is the complementarity P ≥ 0, R ≤ 0, P·R = 0: where the gap
 //! diverges with P = 0 the cell would lose mass (R < 0) and the pressure stays pinned at zero.
-//! Each Newton iteration freezes the active set {i : P_i = 0 and R_i ≤ 0} (their rows become
-//! ΔP_i = 0), solves the full Jacobian for the rest, and projects P ≥ 0 — the primal–dual
-//! active-set (semismooth Newton with the min-function, c → 0⁺) method. The exit point thus moves
-//! freely by any number of nodes per iteration.
+//! It is written as the NCP equation φ_i = min(P_i, −σ_i R_i) = 0 with a per-node scale σ_i
+//! (see `update_sigma`) and solved by semismooth Newton: each iteration the rows with
+//! P_i ≤ −σ_i R_i become ΔP_i = −P_i (the active set), the others the linearised Reynolds
+//! equation — the primal–dual active-set method. The exit point moves freely; it moves by about
+//! one node per iteration, which is why the driver does that work on a coarse grid first.
+//! (A Fischer–Burmeister variant is kept behind `fischer`; it was not better.)
 //!
 //! Jacobian: R_i depends on P_{i−2..i+1} directly (ε(P), ρ̄(P)) and on H_{i−2..i+1}, and every
 //! H_k depends on all P through the deflection matrix, so J = A + B·(−K/π) with banded A, B —
 //! dense, assembled in O(4N²) and factorised by LU with partial pivoting (faer). Rows are
 //! equilibrated before factorisation. Because the unknown is P itself and η̄ enters only through
 //! ε = ρ̄H³·exp(−ln η̄)/λ̄, η̄ spanning 20 decades (or 100 with Barus) just makes ε underflow to 0
-//! in the contact; no row is ever multiplied by η̄.
+//! in the contact; no row is ever multiplied by η̄. A unit test checks J against finite
+//! differences.
 //!
-//! Globalisation: backtracking on the merit ‖F‖² (scaled Reynolds residual of free nodes, the
-//! positive part of R on pinned nodes, and the load row), rejecting any trial with H ≤ 0.
-//! Start: Hertz pressure and H₀ from Moes' formula. If the direct start fails, the caller
-//! ([`super::Solver`]) continues in speed from a thicker-film case.
+//! Globalisation: Deuflhard's restricted natural monotonicity test (affine invariant, hence
+//! blind to the row scaling): a damping factor α is accepted when the simplified correction
+//! Δ̄ = −J⁻¹F(z + αΔ) satisfies ‖Δ̄‖ ≤ (1 − α/4)‖Δ‖, otherwise α shrinks to the predicted
+//! μ = ½α²‖Δ‖/‖Δ̄ − (1 − α)Δ‖; trials with H ≤ 0 are rejected. When a full step contracts well
+//! (‖Δ̄‖ ≤ ‖Δ‖/4) and the active set stays, the next step is that Δ̄ itself (chord step: the LU
+//! is reused, O(N²) instead of O(N³)).
 //!
 //! All work vectors, the Jacobian and the LU scratch are allocated once per [`NewtonWorkspace`];
 //! the iteration loop does not allocate.
