@@ -41,6 +41,10 @@ fn newton_loop_does_not_allocate() {
         let sol = solver.solve(&case).unwrap();
         let during = ALLOCATIONS.load(Ordering::Relaxed) - before;
         assert!(sol.iterations >= 3);
-        assert_eq!(during, 3, "{} allocations in a {}-iteration solve", during, sol.iterations);
+        assert_eq!(
+            during, 3,
+            "{} allocations in a {}-iteration solve",
+            during, sol.iterations
+        );
     }
 }

@@ -123,24 +123,36 @@ impl Solver {
             .for_each(|l| l.set_domain_scale(scale));
         let mut iterations = 0;
         let mut report = self.solve_from_hertz(0, case, &mut iterations);
+        // h_c, h_min of the level below the result grid when the sequence reached the top.
+        let mut coarse = None;
         let last = self.levels.len() - 1;
-        for k in 1..self.levels.len() {
+        for k in 1..=last {
             if !report.converged {
-                // A coarse grid too coarse for this case: go straight to the finest grid.
-                report = self.solve_from_hertz(last, case, &mut iterations);
-                break;
+                // The coarser grid could not represent this case (thin film at high M): start
+                // afresh on this level.
+                coarse = None;
+                report = self.solve_from_hertz(k, case, &mut iterations);
+                continue;
             }
             let (lo, hi) = self.levels.split_at_mut(k);
             let prev = &lo[k - 1];
+            if k == last {
+                let (_, hmin) = super::solution::min_film(&prev.nodes, &prev.h);
+                coarse = Some((prev.central_film(self.opts.elastic), hmin));
+            }
             hi[0].start_from(&prev.nodes, &prev.p, prev.h0);
             let (prob, limits) = (self.problem(case), self.limits());
             report = self.levels[k].run(&prob, &limits);
             iterations += report.iterations;
             if !report.converged {
+                coarse = None;
                 report = self.solve_from_hertz(k, case, &mut iterations);
             }
         }
-        self.finish(case, report, iterations, t0)
+        if !report.converged || !self.opts.richardson || self.levels.len() < 2 {
+            coarse = None;
+        }
+        self.finish(case, report, iterations, t0, coarse)
     }
 
     /// Solves `case` on the finest grid warm-started from a previous solution (of this or a
@@ -166,7 +178,7 @@ impl Solver {
         if !report.converged {
             return self.solve(case);
         }
-        self.finish(case, report, report.iterations, t0)
+        self.finish(case, report, report.iterations, t0, None)
     }
 
     fn finish(
@@ -175,6 +187,7 @@ impl Solver {
         report: NewtonReport,
         iterations: usize,
         t0: Instant,
+        coarse: Option<(f64, f64)>,
     ) -> Result<EhlSolution, EhlError> {
         if !report.converged {
             return Err(EhlError::NotConverged {
@@ -192,6 +205,7 @@ impl Solver {
             iterations,
             &report,
             t0.elapsed().as_secs_f64(),
+            coarse,
         ))
     }
 

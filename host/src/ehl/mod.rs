@@ -104,6 +104,9 @@ pub struct SolverOptions {
     pub load_tolerance: f64,
     /// Allow continuation in α when the direct Hertz start fails.
     pub continuation: bool,
+    /// Report h_c and h_min Richardson-extrapolated from the result grid and the
+    /// half-resolution level of the grid sequence (raw values are kept in the solution).
+    pub richardson: bool,
 }
 
 /// Default number of grid nodes (see the grid-refinement test for its accuracy).
@@ -125,6 +128,7 @@ impl Default for SolverOptions {
             pressure_tolerance: 1e-5,
             load_tolerance: 1e-3,
             continuation: true,
+            richardson: true,
         }
     }
 }
