@@ -55,6 +55,7 @@ pub fn plot(s: &EhlSolution, path: &Path) -> Result<()> {
         .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 20, b)], RED));
     chart
         .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
         .background_style(WHITE.mix(0.8))
         .border_style(BLACK)
         .draw()
