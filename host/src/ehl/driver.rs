@@ -17,6 +17,10 @@ use std::time::Instant;
 
 /// Coarsest grid of the sequence (nodes).
 const COARSEST_NODES: usize = 101;
+/// Smallest grid a result may come from when `adaptive` stops early.
+const MIN_RESULT_NODES: usize = 401;
+/// Adaptive stop: estimated raw relative error of h_c (h_min: twice this) on the result level.
+const ADAPTIVE_TOLERANCE: f64 = 0.01;
 
 /// Reusable solver: grids, deflection matrices and all work storage are built once for the
 /// options and reused by every [`Solver::solve`] (dataset generation, HIL re-solves).
@@ -123,9 +127,10 @@ impl Solver {
             .for_each(|l| l.set_domain_scale(scale));
         let mut iterations = 0;
         let mut report = self.solve_from_hertz(0, case, &mut iterations);
-        // h_c, h_min of the level below the result grid when the sequence reached the top.
+        // h_c, h_min of the level below the result level, when reached by sequencing.
         let mut coarse = None;
         let last = self.levels.len() - 1;
+        let mut result_level = last;
         for k in 1..=last {
             if !report.converged {
                 // The coarser grid could not represent this case (thin film at high M): start
@@ -136,10 +141,8 @@ impl Solver {
             }
             let (lo, hi) = self.levels.split_at_mut(k);
             let prev = &lo[k - 1];
-            if k == last {
-                let (_, hmin) = super::solution::min_film(&prev.nodes, &prev.h);
-                coarse = Some((prev.central_film(self.opts.elastic), hmin));
-            }
+            let (_, hmin) = super::solution::min_film(&prev.nodes, &prev.h);
+            coarse = Some((prev.central_film(self.opts.elastic), hmin));
             hi[0].start_from(&prev.nodes, &prev.p, prev.h0);
             let (prob, limits) = (self.problem(case), self.limits());
             report = self.levels[k].run(&prob, &limits);
@@ -147,12 +150,29 @@ impl Solver {
             if !report.converged {
                 coarse = None;
                 report = self.solve_from_hertz(k, case, &mut iterations);
+                continue;
+            }
+            // Adaptive stop: the raw error of this level, estimated as |f_k − f_{k−1}|/3
+            // (order 2), is within the target, so the extrapolated value is well inside it.
+            if let (true, Some((hc_half, hmin_half))) = (self.opts.adaptive, coarse) {
+                let ws = &self.levels[k];
+                let hc = ws.central_film(self.opts.elastic);
+                let (_, hm) = super::solution::min_film(&ws.nodes, &ws.h);
+                let est_c = ((hc - hc_half) / hc).abs() / 3.0;
+                let est_m = ((hm - hmin_half) / hm).abs() / 3.0;
+                if ws.len() >= MIN_RESULT_NODES
+                    && est_c <= ADAPTIVE_TOLERANCE
+                    && est_m <= 2.0 * ADAPTIVE_TOLERANCE
+                {
+                    result_level = k;
+                    break;
+                }
             }
         }
-        if !report.converged || !self.opts.richardson || self.levels.len() < 2 {
+        if !report.converged || !self.opts.richardson {
             coarse = None;
         }
-        self.finish(case, report, iterations, t0, coarse)
+        self.finish(case, report, iterations, t0, coarse, result_level)
     }
 
     /// Solves `case` on the finest grid warm-started from a previous solution (of this or a
@@ -178,7 +198,7 @@ impl Solver {
         if !report.converged {
             return self.solve(case);
         }
-        self.finish(case, report, report.iterations, t0, None)
+        self.finish(case, report, report.iterations, t0, None, k)
     }
 
     fn finish(
@@ -188,6 +208,7 @@ impl Solver {
         iterations: usize,
         t0: Instant,
         coarse: Option<(f64, f64)>,
+        level: usize,
     ) -> Result<EhlSolution, EhlError> {
         if !report.converged {
             return Err(EhlError::NotConverged {
@@ -201,7 +222,7 @@ impl Solver {
         Ok(EhlSolution::from_state(
             case,
             &self.opts,
-            self.finest(),
+            &self.levels[level],
             iterations,
             &report,
             t0.elapsed().as_secs_f64(),

@@ -107,6 +107,10 @@ pub struct SolverOptions {
     /// Report h_c and h_min Richardson-extrapolated from the result grid and the
     /// half-resolution level of the grid sequence (raw values are kept in the solution).
     pub richardson: bool,
+    /// Stop the grid sequence at the first level of ≥ 401 nodes whose estimated raw error
+    /// |f_k − f_{k−1}|/3 is ≤ 1 % for h_c and ≤ 2 % for h_min (the result then has fewer than
+    /// `nodes` nodes; `EhlSolution::nodes` says how many).
+    pub adaptive: bool,
 }
 
 /// Default number of grid nodes (see the grid-refinement test for its accuracy).
@@ -129,6 +133,7 @@ impl Default for SolverOptions {
             load_tolerance: 1e-3,
             continuation: true,
             richardson: true,
+            adaptive: true,
         }
     }
 }
