@@ -178,7 +178,12 @@ fn robustness(n: usize, seed: u64, opts: SolverOptions) -> (usize, Vec<String>) 
                         Ok(())
                     }
                 }
-                Err(e) => Err(format!("{s:?}: {e}")),
+                Err(e) => Err(format!(
+                    "M = {:.1}, L = {:.1}, p_h = {:.2} GPa, {s:?}: {e}",
+                    s.case.moes_m(),
+                    s.case.moes_l(),
+                    s.case.hertz_pressure_pa() / 1e9
+                )),
             },
         )
         .collect();
