@@ -320,3 +320,76 @@ fn convergence_table(a: ConvergenceArgs) -> Result<()> {
     println!("(the default solver reports h_c, h_min extrapolated from its last two grid levels)");
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Cli {
+        #[command(subcommand)]
+        command: EhlCommand,
+    }
+
+    fn case_of(args: &[&str]) -> Result<ContactCase> {
+        let mut argv = vec!["bearing-ehl", "solve"];
+        argv.extend_from_slice(args);
+        match Cli::try_parse_from(argv)?.command {
+            EhlCommand::Solve(a) => a.case.case(),
+            EhlCommand::Convergence(a) => a.case.case(),
+        }
+    }
+
+    const SI: [&str; 14] = [
+        "--load",
+        "740",
+        "--length",
+        "0.009",
+        "--entrainment",
+        "5",
+        "--radius",
+        "0.0032",
+        "--modulus",
+        "2.308e11",
+        "--alpha",
+        "2.1e-8",
+        "--eta0",
+        "0.08",
+    ];
+
+    /// The SI flags build w = Q/l and the other inputs unchanged (PHYSICS.md §1 definitions).
+    #[test]
+    fn si_flags_build_the_case() {
+        let c = case_of(&SI).unwrap();
+        assert!((c.load_per_length_n_per_m - 740.0 / 0.009).abs() < 1e-9);
+        assert_eq!(c.viscosity_pa_s, 0.08);
+    }
+
+    /// Hostile values (NaN, inf, zero, negative) are refused naming the flag; mixing or
+    /// omitting case groups is refused.
+    #[test]
+    fn hostile_flags_refused_with_the_flag_name() {
+        for (i, flag) in SI.iter().enumerate().step_by(2) {
+            for bad in ["nan", "inf", "0", "-2"] {
+                if *flag == "--alpha" && bad == "0" {
+                    continue; // α = 0 is a valid (iso-viscous) input
+                }
+                let mut args = SI;
+                args[i + 1] = bad;
+                let e = case_of(&args).unwrap_err().to_string();
+                assert!(e.contains(&flag[2..]), "{flag}={bad}: {e}");
+            }
+        }
+        let e = case_of(&["--m", "nan", "--l", "5"])
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains('M'), "{e}");
+        assert!(case_of(&["--m", "30"])
+            .unwrap_err()
+            .to_string()
+            .contains("--l"));
+        assert!(case_of(&["--m", "30", "--l", "5", "--w", "1e-4"]).is_err());
+        assert!(case_of(&[]).is_err());
+    }
+}
