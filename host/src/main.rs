@@ -20,6 +20,12 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// Film thickness and Hertz figures of one contact, every film model side by side.
+    Film(cli::film::FilmArgs),
+    /// Static equilibrium of a bearing under a radial load (lubricated, and dry with --dry).
+    Static(cli::statics::StaticArgs),
+    /// Flexible-shaft simulator: static, modes, campbell, run, sweep.
+    Shaft(cli::shaft::ShaftArgs),
     /// Full numerical EHL line-contact solver.
     Ehl(cli::ehl::EhlArgs),
 }
@@ -27,6 +33,9 @@ enum Command {
 fn main() -> std::process::ExitCode {
     let cli = Cli::parse();
     let result: anyhow::Result<()> = match cli.command {
+        Command::Film(args) => cli::film::run(args),
+        Command::Static(args) => cli::statics::run(args),
+        Command::Shaft(args) => cli::shaft::run(args),
         Command::Ehl(args) => cli::ehl::run(args),
     };
     match result {

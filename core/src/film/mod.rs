@@ -76,4 +76,63 @@ pub trait FilmModel {
     fn name(&self) -> &'static str;
     /// Central and minimum film of one contact.
     fn film(&self, contact: &ContactInput) -> Film;
+
+    /// The loads at which this model itself serves contacts like `template` (its load is
+    /// ignored): an interval of ln Q (N) and the source it reports there. Outside the interval
+    /// the model falls back. Every domain test of a film model is monotone in ln Q once the
+    /// other inputs are fixed, so the bearing step asks this once per contact kind and step and
+    /// flags each roller with two comparisons. The default serves every load and reports the
+    /// source of one call.
+    fn served_loads(&self, template: &ContactInput) -> ServedLoads {
+        ServedLoads {
+            ln_load_min: f32::MIN,
+            ln_load_max: f32::MAX,
+            source: self
+                .film(&ContactInput {
+                    load_n: 1000.0,
+                    ..*template
+                })
+                .source,
+        }
+    }
 }
+
+/// Where a film model serves contacts of one kind: ln Q ∈ [`ln_load_min`, `ln_load_max`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ServedLoads {
+    /// Smallest ln Q served (ln N).
+    pub ln_load_min: f32,
+    /// Largest ln Q served (ln N).
+    pub ln_load_max: f32,
+    /// The source reported for served contacts.
+    pub source: FilmSource,
+}
+
+impl ServedLoads {
+    /// The source of a contact at ln Q: the model's own inside the interval,
+    /// [`FilmSource::Fallback`] outside. Two comparisons, no branch.
+    #[inline]
+    pub fn source_at(&self, ln_load: f32) -> FilmSource {
+        let inside = (ln_load >= self.ln_load_min) & (ln_load <= self.ln_load_max);
+        if inside {
+            self.source
+        } else {
+            FilmSource::Fallback
+        }
+    }
+}
+
+mod groups;
+mod hydrodynamic;
+mod regime;
+mod regression;
+
+pub use groups::LnGroups;
+pub use hydrodynamic::{
+    martin_central_m, martin_load_per_length, Hydrodynamic, MARTIN_CENTRAL, MARTIN_MINIMUM,
+};
+pub use regime::Regime;
+pub use regression::{
+    dowson_higginson_minimum_m, dowson_toyoda_central_m, moes_central, Regression,
+    CENTRAL_LOAD_EXPONENT, MINIMUM_LOAD_EXPONENT,
+};

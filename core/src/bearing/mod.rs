@@ -1,0 +1,427 @@
+//! The bearing step: from inner-race motion to roller loads, forces, stiffness and damping.
+//!
+//! [`Bearing`] owns everything a step needs (sliced rollers, roller directions, the warm start)
+//! in fixed arrays sized by the const generics `Z` (rollers) and `S` (slices per roller). Its
+//! [`Bearing::step`] runs the pipeline of PHYSICS.md §4 with a film model; [`Bearing::step_dry`]
+//! is today's multi-body practice (film ≡ 0), for comparison. Both take the same number of
+//! operations for every input, and neither can panic: a bad operating state is refused with a
+//! flagged, all-zero output.
+
+mod coupling;
+mod equilibrium;
+mod film_law;
+mod output;
+
+pub use coupling::{INNER_ITERATIONS, REFINE_ITERATIONS};
+pub use equilibrium::Equilibrium;
+pub use film_law::FILM_NODES;
+pub use output::{BearingOutput, RollerOutput, StepStatus};
+
+use crate::contact::{ContactLaw, SlicedRoller};
+use crate::error::{in_range, Allowed, ParamError};
+use crate::film::{ContactInput, FilmModel, FilmSource, Regime};
+use crate::math::{ln, sin_cos};
+use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
+use coupling::{solve_roller, ContactContext, RollerMemory};
+use film_law::StepFilmLaw;
+use output::StiffnessSums;
+
+/// Everything that defines a lubricated roller bearing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BearingParams {
+    geometry: BearingGeometry,
+    reduced_modulus_pa: f32,
+    lubricant: Lubricant,
+    law: ContactLaw,
+    damping_factor_s: f32,
+}
+
+impl BearingParams {
+    /// A bearing from its geometry, the materials of the rings and the rollers, the lubricant,
+    /// the slice contact law and the damping factor f_damp (s; 0 … 10⁻³, the thesis used
+    /// 0.25·10⁻⁵ … 2.5·10⁻⁵, PHYSICS.md §4).
+    pub fn new(
+        geometry: BearingGeometry,
+        ring_material: Material,
+        roller_material: Material,
+        lubricant: Lubricant,
+        law: ContactLaw,
+        damping_factor_s: f32,
+    ) -> Result<Self, ParamError> {
+        Ok(Self {
+            geometry,
+            reduced_modulus_pa: reduced_modulus(&ring_material, &roller_material),
+            lubricant,
+            law,
+            damping_factor_s: in_range("damping_factor_s", damping_factor_s, 0.0, 1.0e-3)?,
+        })
+    }
+
+    /// Geometry.
+    pub fn geometry(&self) -> &BearingGeometry {
+        &self.geometry
+    }
+    /// Reduced modulus E' of the roller–race contacts (Pa).
+    pub fn reduced_modulus_pa(&self) -> f32 {
+        self.reduced_modulus_pa
+    }
+    /// Lubricant.
+    pub fn lubricant(&self) -> &Lubricant {
+        &self.lubricant
+    }
+    /// Slice contact law.
+    pub fn law(&self) -> ContactLaw {
+        self.law
+    }
+    /// Damping factor f_damp (s).
+    pub fn damping_factor_s(&self) -> f32 {
+        self.damping_factor_s
+    }
+
+    /// The film-model input of the inner (`outer = false`) or outer contact for roller load
+    /// `load_n` (N) at shaft speed ω (rad/s).
+    pub fn contact_input(&self, outer: bool, load_n: f32, shaft_speed_rad_s: f32) -> ContactInput {
+        let g = &self.geometry;
+        ContactInput {
+            load_n,
+            length_m: g.roller_length_m(),
+            entrainment_speed_m_s: g.entrainment_speed_m_s(shaft_speed_rad_s),
+            reduced_radius_m: if outer {
+                g.outer_reduced_radius_m()
+            } else {
+                g.inner_reduced_radius_m()
+            },
+            reduced_modulus_pa: self.reduced_modulus_pa,
+            pressure_viscosity_pa_inv: self.lubricant.pressure_viscosity_pa_inv(),
+            viscosity_pa_s: self.lubricant.viscosity_pa_s(),
+        }
+    }
+}
+
+/// Steps [`Bearing::settle`] needs from a cold start (tested over the PHYSICS.md §5.3 domain).
+pub const SETTLE_STEPS: usize = 6;
+
+/// Floor of the entrainment speed in the film arithmetic (m/s); see `contact_contexts`.
+const MIN_ENTRAINMENT_M_S: f32 = 1.0e-6;
+
+/// ln Q span of the film nodes before any step has loaded a roller: 10 N … 3 kN.
+const DEFAULT_LOAD_SPAN: (f32, f32) = (core::f32::consts::LN_10, 8.006_368);
+
+/// A bearing of `Z` rollers with `S` slices each, with its warm start.
+#[derive(Clone, Debug)]
+pub struct Bearing<const Z: usize, const S: usize> {
+    params: BearingParams,
+    roller: SlicedRoller<S>,
+    /// cos and sin of 2πj/Z, the roller positions relative to the cage.
+    pitch: [(f32, f32); Z],
+    /// 2πj/Z (rad).
+    pitch_angle_rad: [f32; Z],
+    /// What each roller carries to the next step: the warm start.
+    memory: [RollerMemory; Z],
+    /// ln Q of the lightest and heaviest loaded roller at the last step: where the next step
+    /// evaluates the film model.
+    load_span: (f32, f32),
+    output: BearingOutput<Z>,
+}
+
+impl<const Z: usize, const S: usize> Bearing<Z, S> {
+    /// A bearing whose geometry has exactly `Z` rollers, sliced `S ≥ 1` times.
+    pub fn new(params: BearingParams) -> Result<Self, ParamError> {
+        let count = params.geometry.roller_count();
+        if usize::from(count) != Z {
+            return Err(ParamError {
+                field: "roller_count",
+                value: f32::from(count),
+                allowed: Allowed::Range {
+                    min: Z as f32,
+                    max: Z as f32,
+                },
+            });
+        }
+        if S == 0 || S > 1000 {
+            return Err(ParamError {
+                field: "slice_count",
+                value: S as f32,
+                allowed: Allowed::Range {
+                    min: 1.0,
+                    max: 1000.0,
+                },
+            });
+        }
+        let mut pitch = [(0.0, 1.0); Z];
+        let mut pitch_angle_rad = [0.0; Z];
+        for (j, (p, a)) in pitch.iter_mut().zip(pitch_angle_rad.iter_mut()).enumerate() {
+            *a = 2.0 * core::f32::consts::PI * j as f32 / Z as f32;
+            *p = (libm::cosf(*a), libm::sinf(*a));
+        }
+        Ok(Self {
+            roller: SlicedRoller::new(&params.geometry, params.reduced_modulus_pa, params.law),
+            params,
+            pitch,
+            pitch_angle_rad,
+            memory: [RollerMemory::default(); Z],
+            load_span: DEFAULT_LOAD_SPAN,
+            output: BearingOutput::ZERO,
+        })
+    }
+
+    /// Parameters.
+    pub fn params(&self) -> &BearingParams {
+        &self.params
+    }
+
+    /// The sliced roller.
+    pub fn roller(&self) -> &SlicedRoller<S> {
+        &self.roller
+    }
+
+    /// The last output.
+    pub fn output(&self) -> &BearingOutput<Z> {
+        &self.output
+    }
+
+    /// Forget the warm start (the next step starts from unloaded rollers).
+    pub fn reset(&mut self) {
+        self.memory = [RollerMemory::default(); Z];
+        self.load_span = DEFAULT_LOAD_SPAN;
+    }
+
+    /// Per-step data of the two contacts (inner, outer).
+    fn contact_contexts(&self, shaft_speed_rad_s: f32) -> [ContactContext; 2] {
+        let p = &self.params;
+        let context = |outer: bool| {
+            let mut template = p.contact_input(outer, 0.0, shaft_speed_rad_s);
+            // Computed with a floor of 1 µm/s on the entrainment speed, so a shaft at standstill
+            // runs the same arithmetic, on normal (not subnormal) numbers, as a turning one:
+            // exact zeros and subnormals took a different number of instructions on the
+            // emulated M4. At the floor the films are ≈10⁻¹⁰ m and a roller 1 µm clear of its
+            // races still carries ≈0.03 N of hydrodynamic load; the step reports zero films,
+            // dry regimes and no film source at standstill.
+            template.entrainment_speed_m_s =
+                crate::math::max(template.entrainment_speed_m_s, MIN_ENTRAINMENT_M_S);
+            let er = template.reduced_modulus_pa * template.reduced_radius_m;
+            let speed = template.viscosity_pa_s * template.entrainment_speed_m_s;
+            let ln_2u = core::f32::consts::LN_2 + ln(speed) - ln(er);
+            let ln_g = ln(template.pressure_viscosity_pa_inv * template.reduced_modulus_pa);
+            ContactContext {
+                template,
+                martin: 6.0 * speed * template.reduced_radius_m * template.length_m,
+                ln_m_offset: ln(template.length_m * er) + 0.5 * ln_2u,
+                ln_l: ln_g + 0.25 * ln_2u,
+            }
+        };
+        [context(false), context(true)]
+    }
+
+    /// One lubricated step: roller films from `film`, film-coupled loads, forces, stiffness.
+    ///
+    /// A refused `state` leaves the warm start as it was and returns a zero output whose
+    /// status names the bad field.
+    pub fn step<F: FilmModel + ?Sized>(
+        &mut self,
+        film: &F,
+        state: &OperatingState,
+    ) -> &BearingOutput<Z> {
+        if let Err(e) = state.check() {
+            return self.reject(e);
+        }
+        let [inner, outer] = self.contact_contexts(state.shaft_speed_rad_s);
+        let lubricated = self
+            .params
+            .geometry
+            .entrainment_speed_m_s(state.shaft_speed_rad_s)
+            > 0.0;
+        let templates = [inner.template, outer.template];
+        // At standstill every contact reports no film source: an interval covering every load
+        // with source `None`, chosen field by field so that no roller takes a branch.
+        let standstill = |s: crate::film::ServedLoads| crate::film::ServedLoads {
+            ln_load_min: crate::math::select(lubricated, s.ln_load_min, f32::MIN),
+            ln_load_max: crate::math::select(lubricated, s.ln_load_max, f32::MAX),
+            source: [FilmSource::None, s.source]
+                .get(usize::from(lubricated))
+                .copied()
+                .unwrap_or(FilmSource::None),
+        };
+        let served = [
+            standstill(film.served_loads(&templates[0])),
+            standstill(film.served_loads(&templates[1])),
+        ];
+        let films = StepFilmLaw::new(
+            film,
+            templates,
+            [inner.martin, outer.martin],
+            self.load_span,
+        );
+        let ln_m_offsets = [inner.ln_m_offset, outer.ln_m_offset];
+        let ln_l = [inner.ln_l, outer.ln_l];
+        let mut span = (f32::MAX, f32::MIN);
+        self.assemble(state, |bearing, j, geometric, tilt| {
+            let mut memory = bearing.memory.get(j).copied().unwrap_or_default();
+            let r = solve_roller(
+                &bearing.roller,
+                &films,
+                ln_m_offsets,
+                ln_l,
+                geometric,
+                tilt,
+                &mut memory,
+            );
+            if let Some(m) = bearing.memory.get_mut(j) {
+                *m = memory;
+            }
+            let loaded = r.load.load_n >= 1.0;
+            span = (
+                crate::math::select(loaded, crate::math::min(span.0, r.ln_load), span.0),
+                crate::math::select(loaded, crate::math::max(span.1, r.ln_load), span.1),
+            );
+            let [(central_in, min_in), (central_out, min_out)] = r.films;
+            let s0 = r.load.stiffness_n_per_m;
+            let coupling = r.film_slope_m_per_n / (1.0 - s0 * r.film_slope_m_per_n);
+            let shown = |h: f32| crate::math::select(lubricated, h, 0.0);
+            // A table, not an `if`: the work must not depend on the speed.
+            let shown_regime = |r: Regime| {
+                [Regime::Dry, r]
+                    .get(usize::from(lubricated))
+                    .copied()
+                    .unwrap_or(Regime::Dry)
+            };
+            let roller = RollerOutput {
+                approach_m: r.approach_m,
+                central_film_in_m: shown(central_in),
+                central_film_out_m: shown(central_out),
+                min_film_in_m: shown(min_in),
+                min_film_out_m: shown(min_out),
+                roller_stiffness_n_per_m: s0 / (1.0 - s0 * r.film_slope_m_per_n),
+                regime_in: shown_regime(r.regimes[0]),
+                regime_out: shown_regime(r.regimes[1]),
+                film_source_in: served[0].source_at(r.ln_load),
+                film_source_out: served[1].source_at(r.ln_load),
+                ..RollerOutput::ZERO
+            };
+            (r.load, roller, coupling)
+        });
+        // The loads the next step's film model sees; unchanged when nothing is loaded.
+        if span.0 <= span.1 {
+            self.load_span = span;
+        }
+        &self.output
+    }
+
+    /// Run [`Bearing::step`] `steps` times at the same state, so the warm start converges
+    /// before a real-time loop begins ([`SETTLE_STEPS`] reach |Δh|/h ≤ 10⁻³ from a cold start;
+    /// a crowned roller just touching needs four: its first step has neither a power law of its
+    /// own nor film nodes at its load).
+    pub fn settle<F: FilmModel + ?Sized>(
+        &mut self,
+        film: &F,
+        state: &OperatingState,
+        steps: usize,
+    ) -> &BearingOutput<Z> {
+        for _ in 0..steps.saturating_sub(1) {
+            self.step(film, state);
+        }
+        self.step(film, state)
+    }
+
+    /// One dry step (film ≡ 0): today's multi-body practice, for comparison.
+    pub fn step_dry(&mut self, state: &OperatingState) -> &BearingOutput<Z> {
+        if let Err(e) = state.check() {
+            return self.reject(e);
+        }
+        self.assemble(state, |bearing, _, geometric, tilt| {
+            let load = bearing.roller.evaluate(geometric, tilt);
+            let roller = RollerOutput {
+                approach_m: geometric,
+                roller_stiffness_n_per_m: load.stiffness_n_per_m,
+                regime_in: Regime::Dry,
+                regime_out: Regime::Dry,
+                ..RollerOutput::ZERO
+            };
+            (load, roller, 0.0)
+        })
+    }
+
+    fn reject(&mut self, error: ParamError) -> &BearingOutput<Z> {
+        self.output = BearingOutput::ZERO;
+        self.output.status = StepStatus::Rejected(error);
+        &self.output
+    }
+
+    /// Run `roller_step` for every roller and sum forces, moments, stiffness and damping.
+    /// `roller_step(self, j, geometric approach, tilt)` returns the slice load, the roller's
+    /// film fields and the film coupling factor of the stiffness (see `StiffnessSums`).
+    fn assemble(
+        &mut self,
+        state: &OperatingState,
+        mut roller_step: impl FnMut(
+            &mut Self,
+            usize,
+            f32,
+            f32,
+        ) -> (crate::contact::RollerLoad, RollerOutput, f32),
+    ) -> &BearingOutput<Z> {
+        let [x, y] = state.displacement_m;
+        let [vx, vy] = state.velocity_m_s;
+        let [tilt_x, tilt_y] = state.tilt_rad;
+        let clearance = self.params.geometry.radial_clearance_m();
+        let damping = self.params.damping_factor_s;
+        let (sin_c, cos_c) = sin_cos(state.cage_angle_rad);
+        let mut out = BearingOutput::<Z>::ZERO;
+        let mut stiffness = StiffnessSums::default();
+        for j in 0..Z {
+            let (cp, sp) = self.pitch.get(j).copied().unwrap_or((1.0, 0.0));
+            // Roller direction θ_j = θ_c + 2πj/Z by the angle-sum identities.
+            let c = cos_c * cp - sin_c * sp;
+            let s = sin_c * cp + cos_c * sp;
+            let geometric = x * c + y * s - clearance;
+            let tilt = tilt_y * c - tilt_x * s;
+            let (load, mut roller, coupling) = roller_step(self, j, geometric, tilt);
+            let approach_rate = vx * c + vy * s;
+            let damping_force = damping * load.stiffness_n_per_m * approach_rate;
+            // A roller pushes, it cannot pull: the total roller force is clamped at zero.
+            let roller_force = crate::math::max(load.load_n + damping_force, 0.0);
+            out.force_n[0] -= roller_force * c;
+            out.force_n[1] -= roller_force * s;
+            out.moment_nm[0] += load.moment_nm * s;
+            out.moment_nm[1] -= load.moment_nm * c;
+            stiffness.add(
+                (c, s),
+                [
+                    load.stiffness_n_per_m,
+                    load.stiffness_moment_n,
+                    load.stiffness_tilt_nm,
+                ],
+                coupling,
+            );
+            let cd = damping * load.stiffness_n_per_m;
+            out.damping_n_s_per_m[0][0] += cd * c * c;
+            out.damping_n_s_per_m[0][1] += cd * c * s;
+            out.damping_n_s_per_m[1][0] += cd * c * s;
+            out.damping_n_s_per_m[1][1] += cd * s * s;
+            roller.angle_rad = wrap_angle(
+                state.cage_angle_rad + self.pitch_angle_rad.get(j).copied().unwrap_or(0.0),
+            );
+            roller.geometric_approach_m = geometric;
+            roller.load_n = load.load_n;
+            roller.damping_force_n = damping_force;
+            roller.moment_nm = load.moment_nm;
+            roller.contact_stiffness_n_per_m = load.stiffness_n_per_m;
+            if let Some(slot) = out.rollers.get_mut(j) {
+                *slot = roller;
+            }
+        }
+        out.stiffness = stiffness.matrix();
+        self.output = out;
+        &self.output
+    }
+}
+
+/// Wrap an angle into [−π, π] at a fixed cost.
+fn wrap_angle(angle_rad: f32) -> f32 {
+    let turns = angle_rad * (0.5 * core::f32::consts::FRAC_1_PI);
+    let whole = (turns + if turns >= 0.0 { 0.5 } else { -0.5 }) as i32;
+    angle_rad - whole as f32 * (2.0 * core::f32::consts::PI)
+}
+
+#[cfg(test)]
+mod tests;

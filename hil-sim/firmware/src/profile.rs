@@ -1,0 +1,122 @@
+//! Where the instructions of a bearing step go: the instruction count (TIM2, see `counter`) of
+//! the core's building blocks, each called once on typical hub-motor values, written to
+//! `profile.csv` for the report. A measurement's own overhead (an empty call) is subtracted.
+
+use crate::counter;
+use crate::host_io::{HostFile, IoError};
+use crate::kernel;
+use bearing_core::{math, Bearing, FilmModel, OperatingState, Regression};
+use core::hint::black_box;
+
+/// Instructions of `f`, minus those of measuring nothing.
+#[inline(never)]
+fn measure<R>(f: impl FnOnce() -> R) -> u32 {
+    let start = counter::now();
+    black_box(f());
+    counter::elapsed(start, counter::now()).instructions
+}
+
+/// A typical loaded hub-motor state: 6 µm towards −y, 21 000 rpm.
+fn state() -> OperatingState {
+    OperatingState {
+        displacement_m: [0.0, -6.0e-6],
+        velocity_m_s: [1.0e-4, 0.0],
+        tilt_rad: [0.0; 2],
+        shaft_speed_rad_s: 2199.0,
+        cage_angle_rad: 0.3,
+    }
+}
+
+/// Writes `name,instructions` lines into `profile.csv`.
+pub fn write_profile() -> Result<(), IoError> {
+    let Ok(params) = kernel::params("hub_motor", "thesis_oil") else {
+        return Err(IoError);
+    };
+    let Ok(mut bearing) = Bearing::<17, { kernel::SLICES }>::new(params) else {
+        return Err(IoError);
+    };
+    let state = state();
+    bearing.settle(&Regression, &state, 3);
+    let contact = params.contact_input(false, 800.0, 2199.0);
+    let empty = measure(|| ());
+    let x = black_box(2.0f32);
+    let entries: [(&str, u32); 15] = [
+        (
+            "f32::max(2, 1.5) (fmaxf call)",
+            measure(|| black_box(x).max(black_box(1.5))),
+        ),
+        (
+            "f32::max(2, 3) (fmaxf call)",
+            measure(|| black_box(x).max(black_box(3.0))),
+        ),
+        (
+            "f32::min(2, 3) (fminf call)",
+            measure(|| black_box(x).min(black_box(3.0))),
+        ),
+        ("libm::sqrtf(2)", measure(|| libm::sqrtf(black_box(2.0)))),
+        (
+            "libm::sqrtf(1e-12)",
+            measure(|| libm::sqrtf(black_box(1.0e-12))),
+        ),
+        (
+            "libm::sqrtf(7.3e5)",
+            measure(|| libm::sqrtf(black_box(7.3e5))),
+        ),
+        ("core math::ln", measure(|| math::ln(black_box(x)))),
+        ("core math::exp", measure(|| math::exp(black_box(x)))),
+        (
+            "core math::pow",
+            measure(|| math::pow(black_box(x), black_box(1.11))),
+        ),
+        (
+            "core math::sin_cos",
+            measure(|| math::sin_cos(black_box(x))),
+        ),
+        (
+            "Regression::film, one contact",
+            measure(|| Regression.film(black_box(&contact))),
+        ),
+        (
+            "SlicedRoller::evaluate, 10 slices",
+            measure(|| bearing.roller().evaluate(black_box(4.0e-6), black_box(0.0))),
+        ),
+        (
+            "Bearing::step_dry, 17 rollers",
+            measure(|| bearing.step_dry(black_box(&state)).force_n),
+        ),
+        (
+            "Bearing::step regression, 17 rollers",
+            measure(|| bearing.step(&Regression, black_box(&state)).force_n),
+        ),
+        ("measurement overhead (subtracted)", empty),
+    ];
+    let mut file = HostFile::open(
+        b"profile.csv\0",
+        cortex_m_semihosting::nr::open::W_TRUNC_BINARY,
+    )?;
+    file.write_all(b"item,instructions\n")?;
+    for (name, count) in entries {
+        let net = if name.starts_with("measurement") {
+            count
+        } else {
+            count.saturating_sub(empty)
+        };
+        defmt::info!("profile: {=str}: {=u32} instructions", name, net);
+        file.write_all(name.as_bytes())?;
+        file.write_all(b",")?;
+        let mut digits = [0u8; 10];
+        let mut at = digits.len();
+        let mut value = net;
+        loop {
+            at -= 1;
+            digits[at] = b'0' + (value % 10) as u8;
+            value /= 10;
+            if value == 0 {
+                break;
+            }
+        }
+        file.write_all(&digits[at..])?;
+        file.write_all(b"\n")?;
+    }
+    Ok(())
+}

@@ -1,0 +1,136 @@
+//! `hil-sim replay`: replay a trace through the bearing model on the host, time every step,
+//! check accuracy against the numerical solver, and write the report.
+
+use super::check_range;
+use anyhow::{anyhow, Context, Result};
+use bearing_hil::replay::engine::Parts;
+use bearing_hil::replay::report::ReplayReport;
+use bearing_hil::replay::stats::Limits;
+use bearing_hil::replay::{plots, replay, FilmChoice, ReplayConfig};
+use bearing_hil::trace::{Trace, ValidationOptions};
+use bearing_hil::wiring;
+use clap::Args;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// Arguments of `replay`.
+#[derive(Args)]
+pub struct ReplayArgs {
+    /// Trace file (`.csv` or binary); default: the bundled hub-motor run-up.
+    #[arg(long)]
+    pub trace: Option<PathBuf>,
+    /// Step rate (Hz) for pacing and the budget; default: the trace's sample rate.
+    #[arg(long, allow_hyphen_values = true)]
+    pub rate_hz: Option<f64>,
+    /// Step-time budget for the 99.9th percentile (µs).
+    #[arg(long, default_value_t = Limits::default().budget_us, allow_hyphen_values = true)]
+    pub budget_us: f64,
+    /// Film model of the bearing step.
+    #[arg(long, value_enum, default_value_t = FilmChoice::Int)]
+    pub film: FilmChoice,
+    /// Recompute every K-th sample with the full numerical solver (0: no accuracy check).
+    #[arg(long, default_value_t = 50)]
+    pub reference_every: usize,
+    /// Run at wall-clock rate with a deadline per period; count misses and lateness.
+    #[arg(long)]
+    pub paced: bool,
+    /// Directory for report.json, report.md and the plots.
+    #[arg(long, default_value = "reports/replay")]
+    pub report: PathBuf,
+    /// Print the JSON report instead of the markdown summary.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Runs the replay; exit status 2 when the budget or the accuracy limits are missed.
+pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
+    let budget_us = check_range("--budget-us", args.budget_us, 1e-3, 1e6)?;
+    let path = args.trace.clone().unwrap_or_else(wiring::default_trace);
+    if args.trace.is_none() && !path.exists() {
+        anyhow::bail!(
+            "the bundled trace {} is missing; pass --trace FILE (`hil-sim trace synth FILE` writes a synthetic one)",
+            path.display()
+        );
+    }
+    let trace = Trace::read(&path, &ValidationOptions::default())
+        .with_context(|| format!("reading trace {}", path.display()))?;
+    let rate_hz = match args.rate_hz {
+        Some(rate) => check_range("--rate-hz", rate, 1e-3, 1e7)?,
+        None => trace.meta.sample_rate_hz,
+    };
+    let period_us = 1e6 / rate_hz;
+    if budget_us > period_us {
+        anyhow::bail!(
+            "--budget-us = {budget_us} exceeds the period 1/--rate-hz = {period_us:.3} µs: such a budget cannot be met in real time"
+        );
+    }
+    let first = trace
+        .samples
+        .first()
+        .ok_or_else(|| anyhow!("the trace has no samples"))?;
+    let mut product = wiring::product(&trace.meta, args.film, first).map_err(|e| anyhow!(e))?;
+    let config = ReplayConfig {
+        rate_hz,
+        reference_every: args.reference_every,
+        paced: args.paced,
+        limits: Limits {
+            budget_us,
+            ..Limits::default()
+        },
+        min_reference_force_n: 1.0,
+    };
+    let points = if args.reference_every == 0 || product.reference.is_none() {
+        0
+    } else {
+        trace.samples.len().div_ceil(args.reference_every)
+    };
+    let bar = indicatif::ProgressBar::new(points as u64);
+    if args.json || points == 0 {
+        bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+    } else {
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "reference solver {bar:40} {pos}/{len} samples, eta {eta}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+    }
+    let stepper_name = product.stepper.name();
+    let run = replay(
+        &trace,
+        Parts {
+            stepper: product.stepper.as_mut(),
+            reference: product
+                .reference
+                .as_mut()
+                .map(|r| r.as_mut() as &mut dyn bearing_hil::replay::AccuracyReference),
+            dry: product
+                .dry
+                .as_mut()
+                .map(|d| d.as_mut() as &mut dyn bearing_hil::replay::BearingStepper),
+        },
+        &config,
+        Some(&bar),
+    )?;
+    bar.finish_and_clear();
+    let report = ReplayReport::build(&trace.meta, args.film, stepper_name, &config, &run)
+        .ok_or_else(|| anyhow!("the trace has no samples"))?;
+    report
+        .write(&args.report)
+        .with_context(|| format!("writing the report into {}", args.report.display()))?;
+    plots::write_all(&args.report, &trace, &run, budget_us).map_err(|e| anyhow!(e))?;
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&report)?);
+    } else {
+        println!("{}", report.markdown());
+        println!("report written to {}", args.report.display());
+    }
+    if report.passed() {
+        Ok(ExitCode::SUCCESS)
+    } else {
+        for reason in &report.reasons {
+            eprintln!("hil-sim replay: {reason}");
+        }
+        Ok(ExitCode::from(2))
+    }
+}

@@ -1,0 +1,343 @@
+//! The replay loop: one timed step per sample, then the accuracy pass.
+//!
+//! Timing: each step is bracketed by two `Instant::now()` reads (the monotonic clock, a vDSO
+//! call of ≈ 20–30 ns on Linux, so a measured step includes about one clock read). In paced
+//! mode, step i is released at start + i/f and due one period later; a step that ends after its
+//! deadline is a miss and its lateness is recorded. The sleep before a release ends 100 µs
+//! early and the rest is spun, because a thread woken from `sleep` can be a scheduler tick late.
+//!
+//! Accuracy: after the timed loop, every K-th sample is recomputed by the reference with the
+//! rollers where the stepper had them, and the dry stepper (if any) replays every sample (it
+//! may integrate state such as the cage angle, so it cannot skip samples). Nothing of this runs
+//! inside the timed loop, so the reference cannot pollute the caches the timings see.
+
+use super::stats::Limits;
+use super::{AccuracyReference, BearingStepper, FilmSource, StepFault, StepOutputs};
+use crate::trace::{Sample, Trace};
+use std::fmt;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+/// How to replay.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReplayConfig {
+    /// Step rate (Hz): the pace of `--paced`, and the rate the budget is judged against.
+    pub rate_hz: f64,
+    /// Recompute every K-th sample with the reference; 0 disables the accuracy pass.
+    pub reference_every: usize,
+    /// Run at wall-clock rate with a deadline per period.
+    pub paced: bool,
+    /// Budget and accuracy limits.
+    pub limits: Limits,
+    /// Force errors are only taken where the reference force is at least this large (N), because
+    /// a relative error of a force crossing zero says nothing about the model.
+    pub min_reference_force_n: f64,
+}
+
+/// The models a replay drives.
+pub struct Parts<'a> {
+    /// The real-time model under test (timed).
+    pub stepper: &'a mut dyn BearingStepper,
+    /// The full numerical solver, if accuracy is checked.
+    pub reference: Option<&'a mut dyn AccuracyReference>,
+    /// The dry model (h ≡ 0), whose force error is reported beside the stepper's.
+    pub dry: Option<&'a mut dyn BearingStepper>,
+}
+
+/// Deadline statistics of a paced replay.
+#[derive(Clone, Copy, Debug, PartialEq, Default, serde::Serialize)]
+pub struct Pacing {
+    /// Steps that ended after their deadline.
+    pub misses: usize,
+    /// Largest lateness past a deadline (ns).
+    pub max_lateness_ns: u64,
+    /// Sum of the lateness of all misses (ns).
+    pub total_lateness_ns: u64,
+    /// Wall-clock duration of the paced loop (s).
+    pub wall_s: f64,
+}
+
+/// The errors at one reference sample.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct AccuracyPoint {
+    /// Sample index.
+    pub index: usize,
+    /// Sample time (s).
+    pub time_s: f64,
+    /// Largest relative central-film error over the loaded contacts (none loaded: `None`).
+    pub film_rel_err_max: Option<f64>,
+    /// Relative bearing-force error (`None` below the force floor).
+    pub force_rel_err: Option<f64>,
+    /// Relative force error of the dry model.
+    pub dry_force_rel_err: Option<f64>,
+    /// Magnitude of the reference force (N).
+    pub reference_force_n: f64,
+}
+
+/// How many contacts each film model served over the whole replay.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize)]
+pub struct SourceCounts {
+    /// No film (dry model, or no entrainment).
+    pub none: u64,
+    /// Regression formula by choice.
+    pub regression: u64,
+    /// f32 network.
+    pub network_f32: u64,
+    /// Integer network.
+    pub network_int: u64,
+    /// Regression standing in for a network outside its domain.
+    pub fallback: u64,
+}
+
+impl SourceCounts {
+    fn add(&mut self, source: FilmSource) {
+        let slot = match source {
+            FilmSource::None => &mut self.none,
+            FilmSource::Regression => &mut self.regression,
+            FilmSource::NetworkF32 => &mut self.network_f32,
+            FilmSource::NetworkInt => &mut self.network_int,
+            FilmSource::Fallback => &mut self.fallback,
+        };
+        *slot += 1;
+    }
+
+    /// Fraction of film-carrying contacts served by a network (f32 or integer); `None` when no
+    /// contact carried a film (the dry model).
+    pub fn network_fraction(&self) -> Option<f64> {
+        let network = self.network_f32 + self.network_int;
+        let with_film = network + self.regression + self.fallback;
+        (with_film > 0).then(|| network as f64 / with_film as f64)
+    }
+}
+
+/// Everything a replay measured.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReplayRun {
+    /// Time of every step (ns).
+    pub step_times_ns: Vec<u64>,
+    /// Outputs of every step.
+    pub outputs: Vec<StepOutputs>,
+    /// Deadline statistics when paced.
+    pub pacing: Option<Pacing>,
+    /// Errors at each reference sample.
+    pub points: Vec<AccuracyPoint>,
+    /// Relative central-film error of every loaded contact at every reference sample.
+    pub film_errors: Vec<f64>,
+    /// Relative force error at every reference sample above the force floor.
+    pub force_errors: Vec<f64>,
+    /// Same for the dry model.
+    pub dry_force_errors: Vec<f64>,
+    /// Film sources over all steps and contacts.
+    pub sources: SourceCounts,
+}
+
+/// A replay that could not finish.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReplayError {
+    /// Sample index.
+    pub index: usize,
+    /// Which model failed: `"stepper"`, `"reference"` or `"dry stepper"`.
+    pub stage: &'static str,
+    /// Its reason.
+    pub fault: StepFault,
+}
+
+impl fmt::Display for ReplayError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} failed at sample {}: {}",
+            self.stage, self.index, self.fault
+        )
+    }
+}
+
+impl std::error::Error for ReplayError {}
+
+/// Sleeps, then spins, until `release`.
+fn wait_until(release: Instant) {
+    let now = Instant::now();
+    if release > now + Duration::from_micros(200) {
+        std::thread::sleep(release - now - Duration::from_micros(100));
+    }
+    while Instant::now() < release {
+        std::hint::spin_loop();
+    }
+}
+
+/// Relative error |a − b| / |b| of two force vectors.
+fn force_rel_err(force: [f32; 2], reference: [f64; 2]) -> f64 {
+    let dx = f64::from(force[0]) - reference[0];
+    let dy = f64::from(force[1]) - reference[1];
+    dx.hypot(dy) / reference[0].hypot(reference[1])
+}
+
+/// Replays `trace` through `parts` (see the module doc). `progress`, if given, is advanced
+/// once per reference sample.
+pub fn replay(
+    trace: &Trace,
+    parts: Parts<'_>,
+    config: &ReplayConfig,
+    progress: Option<&indicatif::ProgressBar>,
+) -> Result<ReplayRun, ReplayError> {
+    let n = trace.samples.len();
+    let mut step_times_ns = vec![0u64; n];
+    let mut outputs = vec![StepOutputs::default(); n];
+    let mut pacing = config.paced.then(Pacing::default);
+    let start = Instant::now();
+    for (index, ((sample, time), out)) in trace
+        .samples
+        .iter()
+        .zip(step_times_ns.iter_mut())
+        .zip(outputs.iter_mut())
+        .enumerate()
+    {
+        let release = start + Duration::from_secs_f64(index as f64 / config.rate_hz);
+        if config.paced {
+            wait_until(release);
+        }
+        let t0 = Instant::now();
+        let result = parts.stepper.step(black_box(sample), black_box(out));
+        let t1 = Instant::now();
+        result.map_err(|fault| ReplayError {
+            index,
+            stage: "stepper",
+            fault,
+        })?;
+        *time = u64::try_from((t1 - t0).as_nanos()).unwrap_or(u64::MAX);
+        if let Some(p) = pacing.as_mut() {
+            let deadline = release + Duration::from_secs_f64(1.0 / config.rate_hz);
+            if t1 > deadline {
+                let late = u64::try_from((t1 - deadline).as_nanos()).unwrap_or(u64::MAX);
+                p.misses += 1;
+                p.max_lateness_ns = p.max_lateness_ns.max(late);
+                p.total_lateness_ns = p.total_lateness_ns.saturating_add(late);
+            }
+        }
+    }
+    if let Some(p) = pacing.as_mut() {
+        p.wall_s = start.elapsed().as_secs_f64();
+    }
+
+    let mut sources = SourceCounts::default();
+    for out in &outputs {
+        let rollers = out.rollers.min(super::MAX_ROLLERS);
+        for j in 0..rollers {
+            sources.add(out.source_inner[j]);
+            sources.add(out.source_outer[j]);
+        }
+    }
+
+    let mut run = ReplayRun {
+        step_times_ns,
+        outputs,
+        pacing,
+        points: Vec::new(),
+        film_errors: Vec::new(),
+        force_errors: Vec::new(),
+        dry_force_errors: Vec::new(),
+        sources,
+    };
+    accuracy_pass(trace, parts, config, progress, &mut run)?;
+    Ok(run)
+}
+
+/// Steps the dry model over every sample and returns its outputs.
+fn dry_outputs(
+    samples: &[Sample],
+    dry: Option<&mut dyn BearingStepper>,
+) -> Result<Option<Vec<StepOutputs>>, ReplayError> {
+    let Some(dry) = dry else {
+        return Ok(None);
+    };
+    let mut outputs = vec![StepOutputs::default(); samples.len()];
+    for (index, (sample, out)) in samples.iter().zip(outputs.iter_mut()).enumerate() {
+        dry.step(sample, out).map_err(|fault| ReplayError {
+            index,
+            stage: "dry stepper",
+            fault,
+        })?;
+    }
+    Ok(Some(outputs))
+}
+
+fn accuracy_pass(
+    trace: &Trace,
+    parts: Parts<'_>,
+    config: &ReplayConfig,
+    progress: Option<&indicatif::ProgressBar>,
+    run: &mut ReplayRun,
+) -> Result<(), ReplayError> {
+    let (Some(reference), true) = (parts.reference, config.reference_every > 0) else {
+        return Ok(());
+    };
+    let dry = dry_outputs(&trace.samples, parts.dry)?;
+    for index in (0..trace.samples.len()).step_by(config.reference_every) {
+        let (Some(sample), Some(stepped)) = (trace.samples.get(index), run.outputs.get(index))
+        else {
+            break;
+        };
+        let fail = |reason: String| ReplayError {
+            index,
+            stage: "reference",
+            fault: StepFault { reason },
+        };
+        let truth = reference
+            .reference(sample, stepped)
+            .map_err(|f| fail(f.reason))?;
+        let rollers = stepped.rollers;
+        if rollers > super::MAX_ROLLERS
+            || [
+                &truth.roller_load_n,
+                &truth.film_inner_m,
+                &truth.film_outer_m,
+            ]
+            .iter()
+            .any(|v| v.len() != rollers)
+        {
+            return Err(fail(format!(
+                "the reference returned {} rollers, the stepper {rollers}",
+                truth.roller_load_n.len()
+            )));
+        }
+        let mut film_max: Option<f64> = None;
+        for j in 0..rollers {
+            // A loaded contact: the reference roller load is positive. Both contacts of a
+            // roller carry the same load (PHYSICS.md §4), each with its own film.
+            if truth.roller_load_n[j].is_nan() || truth.roller_load_n[j] <= 0.0 {
+                continue;
+            }
+            for (film, film_ref) in [
+                (stepped.film_inner_m[j], truth.film_inner_m[j]),
+                (stepped.film_outer_m[j], truth.film_outer_m[j]),
+            ] {
+                let err = (f64::from(film) - film_ref).abs() / film_ref;
+                run.film_errors.push(err);
+                film_max = Some(film_max.map_or(err, |m: f64| m.max(err)));
+            }
+        }
+        let reference_force_n = truth.force_n[0].hypot(truth.force_n[1]);
+        let above_floor = reference_force_n >= config.min_reference_force_n;
+        let force_err = above_floor.then(|| force_rel_err(stepped.force_n, truth.force_n));
+        let dry_err = match (&dry, above_floor) {
+            (Some(d), true) => d
+                .get(index)
+                .map(|o| force_rel_err(o.force_n, truth.force_n)),
+            _ => None,
+        };
+        run.force_errors.extend(force_err);
+        run.dry_force_errors.extend(dry_err);
+        run.points.push(AccuracyPoint {
+            index,
+            time_s: sample.time_s,
+            film_rel_err_max: film_max,
+            force_rel_err: force_err,
+            dry_force_rel_err: dry_err,
+            reference_force_n,
+        });
+        if let Some(bar) = progress {
+            bar.inc(1);
+        }
+    }
+    Ok(())
+}

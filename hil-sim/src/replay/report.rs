@@ -1,0 +1,231 @@
+//! The replay report: the JSON the issue specifies, a markdown summary and the verdicts.
+//!
+//! JSON keys (issue 6 §4): `steps`, `step_time_ns{min,median,p99,p999,max}`, `budget_ok`,
+//! `accuracy_ok`, `film_rel_err_p99`, `force_rel_err_p99`, `dry_force_rel_err_p99`,
+//! `network_fraction`, plus context (trace, film model, limits, pacing, reasons). Accuracy keys
+//! are `null` when no reference ran (`--reference-every 0` or no reference available):
+//! nothing was checked, which is not the same as a pass.
+
+use super::engine::{Pacing, ReplayConfig, ReplayRun, SourceCounts};
+use super::stats::{accuracy_verdict, budget_verdict, percentile, Limits, StepTimeStats};
+use super::FilmChoice;
+use crate::trace::TraceMeta;
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The report of one replay.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ReplayReport {
+    /// Steps replayed.
+    pub steps: usize,
+    /// Step-time distribution (ns).
+    pub step_time_ns: StepTimeStats,
+    /// p99.9 step time within the budget.
+    pub budget_ok: bool,
+    /// Film and force errors within the limits; `null` when not checked.
+    pub accuracy_ok: Option<bool>,
+    /// 99th-percentile relative error of the central film of loaded contacts.
+    pub film_rel_err_p99: Option<f64>,
+    /// 99th-percentile relative error of the bearing force.
+    pub force_rel_err_p99: Option<f64>,
+    /// Same for the dry model (what the film buys).
+    pub dry_force_rel_err_p99: Option<f64>,
+    /// Fraction of film-carrying contacts served by a network rather than the fallback.
+    pub network_fraction: Option<f64>,
+    /// Contacts per film source over all steps.
+    pub film_sources: SourceCounts,
+    /// Bearing identifier of the trace.
+    pub bearing: String,
+    /// Lubricant identifier of the trace.
+    pub lubricant: String,
+    /// Film model of the stepper.
+    pub film: FilmChoice,
+    /// Stepper name.
+    pub stepper: String,
+    /// Step rate (Hz).
+    pub rate_hz: f64,
+    /// Limits judged against.
+    pub limits: Limits,
+    /// Every K-th sample was recomputed (0: none).
+    pub reference_every: usize,
+    /// Reference samples computed.
+    pub reference_points: usize,
+    /// Loaded contacts compared.
+    pub film_contacts_compared: usize,
+    /// Deadline statistics, when paced.
+    pub pacing: Option<Pacing>,
+    /// Why the replay failed (empty when it passed).
+    pub reasons: Vec<String>,
+}
+
+impl ReplayReport {
+    /// Builds the report and its verdicts.
+    pub fn build(
+        meta: &TraceMeta,
+        film: FilmChoice,
+        stepper: String,
+        config: &ReplayConfig,
+        run: &ReplayRun,
+    ) -> Option<ReplayReport> {
+        let step_time_ns = StepTimeStats::of(&run.step_times_ns)?;
+        let checked = !run.points.is_empty();
+        let film_p99 = percentile(&run.film_errors, 0.99);
+        let force_p99 = percentile(&run.force_errors, 0.99);
+        let mut reasons = Vec::new();
+        let budget_ok = match budget_verdict(&step_time_ns, &config.limits) {
+            Ok(()) => true,
+            Err(reason) => {
+                reasons.push(reason);
+                false
+            }
+        };
+        let accuracy_ok =
+            checked.then(
+                || match accuracy_verdict(film_p99, force_p99, &config.limits) {
+                    Ok(()) => true,
+                    Err(mut missed) => {
+                        reasons.append(&mut missed);
+                        false
+                    }
+                },
+            );
+        Some(ReplayReport {
+            steps: run.step_times_ns.len(),
+            step_time_ns,
+            budget_ok,
+            accuracy_ok,
+            film_rel_err_p99: film_p99,
+            force_rel_err_p99: force_p99,
+            dry_force_rel_err_p99: percentile(&run.dry_force_errors, 0.99),
+            network_fraction: run.sources.network_fraction(),
+            film_sources: run.sources,
+            bearing: meta.bearing.clone(),
+            lubricant: meta.lubricant.clone(),
+            film,
+            stepper,
+            rate_hz: config.rate_hz,
+            limits: config.limits,
+            reference_every: config.reference_every,
+            reference_points: run.points.len(),
+            film_contacts_compared: run.film_errors.len(),
+            pacing: run.pacing,
+            reasons,
+        })
+    }
+
+    /// True when nothing checked failed.
+    pub fn passed(&self) -> bool {
+        self.reasons.is_empty()
+    }
+
+    /// The markdown summary (also what the CLI prints without `--json`).
+    pub fn markdown(&self) -> String {
+        let pct =
+            |v: Option<f64>| v.map_or("not checked".to_string(), |e| format!("{:.3} %", e * 100.0));
+        let verdict = |ok: Option<bool>| match ok {
+            Some(true) => "pass",
+            Some(false) => "FAIL",
+            None => "not checked",
+        };
+        let t = &self.step_time_ns;
+        let mut md = String::new();
+        let _ = writeln!(md, "# Replay report\n");
+        let _ = writeln!(
+            md,
+            "Bearing `{}`, lubricant `{}`, film model `{}` (stepper `{}`), {} steps at {} Hz.\n",
+            self.bearing,
+            self.lubricant,
+            self.film.name(),
+            self.stepper,
+            self.steps,
+            self.rate_hz
+        );
+        let _ = writeln!(md, "## Step time\n");
+        let _ = writeln!(md, "| min | median | p99 | p99.9 | max | mean |");
+        let _ = writeln!(md, "|---:|---:|---:|---:|---:|---:|");
+        let us = |ns: u64| format!("{:.3} µs", ns as f64 / 1e3);
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {:.3} µs |\n",
+            us(t.min),
+            us(t.median),
+            us(t.p99),
+            us(t.p999),
+            us(t.max),
+            t.mean / 1e3
+        );
+        let _ = writeln!(
+            md,
+            "Budget {} µs at p99.9: **{}**.\n",
+            self.limits.budget_us,
+            verdict(Some(self.budget_ok))
+        );
+        if let Some(p) = &self.pacing {
+            let _ = writeln!(
+                md,
+                "Paced at {} Hz for {:.3} s: {} deadline misses, worst lateness {:.3} µs.\n",
+                self.rate_hz,
+                p.wall_s,
+                p.misses,
+                p.max_lateness_ns as f64 / 1e3
+            );
+        }
+        let _ = writeln!(md, "## Accuracy against the full numerical solver\n");
+        let _ = writeln!(
+            md,
+            "{} reference samples (every {}), {} loaded contacts compared.\n",
+            self.reference_points, self.reference_every, self.film_contacts_compared
+        );
+        let _ = writeln!(md, "| quantity | p99 relative error | limit |");
+        let _ = writeln!(md, "|---|---:|---:|");
+        let _ = writeln!(
+            md,
+            "| central film, loaded contacts | {} | {:.1} % |",
+            pct(self.film_rel_err_p99),
+            self.limits.film_rel_err_p99 * 100.0
+        );
+        let _ = writeln!(
+            md,
+            "| bearing force | {} | {:.1} % |",
+            pct(self.force_rel_err_p99),
+            self.limits.force_rel_err_p99 * 100.0
+        );
+        let _ = writeln!(
+            md,
+            "| bearing force, dry model | {} | (for comparison) |\n",
+            pct(self.dry_force_rel_err_p99)
+        );
+        let _ = writeln!(md, "Accuracy: **{}**.\n", verdict(self.accuracy_ok));
+        let s = &self.film_sources;
+        let _ = writeln!(
+            md,
+            "Film sources over all contacts and steps: integer network {}, f32 network {}, regression {}, fallback {}, none {}; network fraction {}.\n",
+            s.network_int,
+            s.network_f32,
+            s.regression,
+            s.fallback,
+            s.none,
+            self.network_fraction.map_or("n/a".into(), |f| format!("{:.4}", f))
+        );
+        if self.reasons.is_empty() {
+            let _ = writeln!(md, "Verdict: **pass**.");
+        } else {
+            let _ = writeln!(md, "Verdict: **FAIL**");
+            for reason in &self.reasons {
+                let _ = writeln!(md, "- {reason}");
+            }
+        }
+        md
+    }
+
+    /// Writes `report.json` and `report.md` into `dir`.
+    pub fn write(&self, dir: &Path) -> std::io::Result<()> {
+        std::fs::create_dir_all(dir)?;
+        let json = serde_json::to_string_pretty(self).map_err(std::io::Error::other)?;
+        std::fs::write(dir.join("report.json"), json)?;
+        let mut md = self.markdown();
+        md.push_str("\n![step time](step_time_histogram.png)\n\n![error along the trace](error_along_trace.png)\n\n![film per roller](film_per_roller.png)\n");
+        std::fs::write(dir.join("report.md"), md)
+    }
+}

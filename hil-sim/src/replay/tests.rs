@@ -1,0 +1,393 @@
+//! Tests of the replay engine with closed-form test doubles (not the product's model).
+//!
+//! The doubles implement the slicing-free form of PHYSICS.md §4 on a 17-roller bearing: rollers
+//! at θ_c + 2πj/Z, approach δ_j = x cos θ_j + y sin θ_j − g_r + 2h, a Palmgren-type load
+//! Q = K δ^(10/9), a film depending on speed only (so there is no fixed point), and the force
+//! −Σ Q (cos θ, sin θ). The stepper computes in f32, the reference the same formulas in f64, so
+//! their difference is f32 rounding (≈ 1e-6 relative): an independent check that the engine
+//! pairs each step with the reference of the same state, rollers and contacts.
+
+use super::engine::{replay, Parts, ReplayConfig};
+use super::report::ReplayReport;
+use super::stats::{budget_verdict, percentile, Limits, StepTimeStats};
+use super::*;
+use crate::trace::synthetic::Whirl;
+use crate::trace::{Trace, TraceMeta};
+
+const Z: usize = 17;
+/// Load constant K (N/m^(10/9)), of the order of PHYSICS.md §3's Palmgren law for l = 15 mm.
+const K: f64 = 8.0e9;
+/// Radial clearance g_r (m): the hub-motor bearing's 2 µm interference.
+const CLEARANCE: f64 = -2.0e-6;
+/// Cage speed ratio (1 − γ)/2 for d_m = 60 mm, D = 8.8 mm (PHYSICS.md §2).
+const CAGE_RATIO: f64 = 0.5 * (1.0 - 8.8 / 60.0);
+
+/// Film of the double (m): 0.2 µm at 1000 rad/s, growing like ω^0.7 (the speed exponent of
+/// Dowson–Toyoda, PHYSICS.md §5.1).
+fn film_m(speed: f64) -> f64 {
+    2.0e-7 * (speed.abs() / 1000.0).powf(0.7)
+}
+
+struct ClosedFormStepper {
+    lubricated: bool,
+    cage_angle: f64,
+    last_time: Option<f64>,
+    fail_at: Option<usize>,
+    steps: usize,
+    sleep: Option<std::time::Duration>,
+}
+
+impl ClosedFormStepper {
+    fn new(lubricated: bool) -> Self {
+        Self {
+            lubricated,
+            cage_angle: 0.0,
+            last_time: None,
+            fail_at: None,
+            steps: 0,
+            sleep: None,
+        }
+    }
+}
+
+impl BearingStepper for ClosedFormStepper {
+    fn name(&self) -> String {
+        "test double".into()
+    }
+
+    fn step(&mut self, s: &crate::trace::Sample, out: &mut StepOutputs) -> Result<(), StepFault> {
+        if self.fail_at == Some(self.steps) {
+            return Err(StepFault {
+                reason: "injected".into(),
+            });
+        }
+        self.steps += 1;
+        if let Some(d) = self.sleep {
+            std::thread::sleep(d);
+        }
+        if let Some(t) = self.last_time {
+            self.cage_angle += CAGE_RATIO * f64::from(s.speed_rad_s) * (s.time_s - t);
+        }
+        self.last_time = Some(s.time_s);
+        let h = if self.lubricated {
+            film_m(f64::from(s.speed_rad_s)) as f32
+        } else {
+            0.0
+        };
+        out.rollers = Z;
+        out.cage_angle_rad = self.cage_angle as f32;
+        let mut force = [0f32; 2];
+        for j in 0..Z {
+            let theta = out.cage_angle_rad + (std::f32::consts::TAU * j as f32) / Z as f32;
+            let (sin, cos) = theta.sin_cos();
+            let delta = s.x_m * cos + s.y_m * sin - CLEARANCE as f32 + 2.0 * h;
+            let q = if delta > 0.0 {
+                (K as f32) * delta.powf(10.0 / 9.0)
+            } else {
+                0.0
+            };
+            force[0] -= q * cos;
+            force[1] -= q * sin;
+            out.roller_load_n[j] = q;
+            out.film_inner_m[j] = h;
+            out.film_outer_m[j] = h;
+            let source = match (self.lubricated, j % 2) {
+                (false, _) => FilmSource::None,
+                (true, 0) => FilmSource::NetworkInt,
+                (true, _) => FilmSource::Fallback,
+            };
+            out.source_inner[j] = source;
+            out.source_outer[j] = source;
+        }
+        out.force_n = force;
+        Ok(())
+    }
+}
+
+/// The same formulas in f64; `film_scale` ≠ 1 makes it disagree with the stepper on purpose.
+struct ClosedFormReference {
+    film_scale: f64,
+}
+
+impl AccuracyReference for ClosedFormReference {
+    fn name(&self) -> String {
+        "f64 closed form".into()
+    }
+
+    fn reference(
+        &mut self,
+        s: &crate::trace::Sample,
+        stepped: &StepOutputs,
+    ) -> Result<ReferenceOutputs, StepFault> {
+        let h = film_m(f64::from(s.speed_rad_s)) * self.film_scale;
+        let mut r = ReferenceOutputs::default();
+        for j in 0..stepped.rollers {
+            let theta =
+                f64::from(stepped.cage_angle_rad) + std::f64::consts::TAU * j as f64 / Z as f64;
+            let (sin, cos) = theta.sin_cos();
+            let delta = f64::from(s.x_m) * cos + f64::from(s.y_m) * sin - CLEARANCE + 2.0 * h;
+            let q = if delta > 0.0 {
+                K * delta.powf(10.0 / 9.0)
+            } else {
+                0.0
+            };
+            r.force_n[0] -= q * cos;
+            r.force_n[1] -= q * sin;
+            r.roller_load_n.push(q);
+            r.film_inner_m.push(h);
+            r.film_outer_m.push(h);
+        }
+        Ok(r)
+    }
+}
+
+fn trace(count: usize, rate: f64) -> Trace {
+    Whirl {
+        speed_rad_s: 1500.0,
+        acceleration_rad_s2: 0.0,
+        offset_m: [0.0, -6.0e-6],
+        radius_m: 1.5e-6,
+        whirl_rad_s: 2.0 * std::f64::consts::PI * 120.0,
+        tilt_amplitude_rad: None,
+    }
+    .trace(
+        TraceMeta {
+            bearing: "hub_motor".into(),
+            lubricant: "oil".into(),
+            sample_rate_hz: rate,
+        },
+        count,
+    )
+}
+
+fn config(reference_every: usize, paced: bool, rate: f64) -> ReplayConfig {
+    ReplayConfig {
+        rate_hz: rate,
+        reference_every,
+        paced,
+        limits: Limits::default(),
+        min_reference_force_n: 1.0,
+    }
+}
+
+/// Reference: the nearest-rank definition worked by hand on 1..=1000.
+#[test]
+fn nearest_rank_percentiles() {
+    let times: Vec<u64> = (1..=1000).rev().collect();
+    let s = StepTimeStats::of(&times).unwrap();
+    assert_eq!(
+        (s.min, s.median, s.p99, s.p999, s.max),
+        (1, 500, 990, 999, 1000)
+    );
+    assert!((s.mean - 500.5).abs() < 1e-12);
+    assert_eq!(percentile(&[3.0], 0.99), Some(3.0));
+    assert_eq!(percentile(&[], 0.5), None);
+    // NaN sorts last: a NaN error can never hide below a limit.
+    assert!(percentile(&[0.0, f64::NAN], 0.99).unwrap().is_nan());
+}
+
+#[test]
+fn budget_verdict_is_on_p999() {
+    let s = StepTimeStats::of(&(1..=1000).map(|i| i * 10).collect::<Vec<u64>>()).unwrap();
+    // p99.9 = 9990 ns.
+    let limits = |budget_us| Limits {
+        budget_us,
+        ..Limits::default()
+    };
+    assert!(budget_verdict(&s, &limits(9.99)).is_ok());
+    let reason = budget_verdict(&s, &limits(9.98)).unwrap_err();
+    assert!(
+        reason.contains("p99.9 step time 9.990 µs > budget 9.98 µs"),
+        "{reason}"
+    );
+}
+
+#[test]
+fn exact_reference_passes_and_the_dry_model_is_worse() {
+    let trace = trace(500, 10_000.0);
+    let mut stepper = ClosedFormStepper::new(true);
+    let mut dry = ClosedFormStepper::new(false);
+    let mut reference = ClosedFormReference { film_scale: 1.0 };
+    let cfg = config(7, false, 10_000.0);
+    let run = replay(
+        &trace,
+        Parts {
+            stepper: &mut stepper,
+            reference: Some(&mut reference),
+            dry: Some(&mut dry),
+        },
+        &cfg,
+        None,
+    )
+    .unwrap();
+    assert_eq!(run.step_times_ns.len(), 500);
+    assert_eq!(run.points.len(), 500_usize.div_ceil(7));
+    let report =
+        ReplayReport::build(&trace.meta, FilmChoice::Int, stepper.name(), &cfg, &run).unwrap();
+    assert!(report.film_contacts_compared > 0);
+    // f32 against f64 of the same formulas: rounding only.
+    assert!(report.film_rel_err_p99.unwrap() < 1e-5, "{report:?}");
+    assert!(report.force_rel_err_p99.unwrap() < 1e-4, "{report:?}");
+    // Without the 2h ≈ 0.5 µm of film in a ≈ 8 µm approach the force is far off.
+    assert!(report.dry_force_rel_err_p99.unwrap() > 0.05, "{report:?}");
+    assert_eq!(report.accuracy_ok, Some(true));
+    // Sources by roller parity: 9 of 17 rollers (even j) are served by the network.
+    assert!((report.network_fraction.unwrap() - 9.0 / 17.0).abs() < 1e-12);
+    let json = serde_json::to_value(&report).unwrap();
+    for key in [
+        "steps",
+        "budget_ok",
+        "accuracy_ok",
+        "film_rel_err_p99",
+        "force_rel_err_p99",
+        "dry_force_rel_err_p99",
+        "network_fraction",
+    ] {
+        assert!(json.get(key).is_some(), "missing {key}");
+    }
+    for key in ["min", "median", "p99", "p999", "max"] {
+        assert!(
+            json["step_time_ns"].get(key).is_some(),
+            "missing step_time_ns.{key}"
+        );
+    }
+
+    let dir = tempfile::tempdir().unwrap();
+    if let Ok(keep) = std::env::var("HIL_TEST_KEEP_PLOTS") {
+        std::fs::create_dir_all(&keep).unwrap();
+        plots::write_all(std::path::Path::new(&keep), &trace, &run, 10.0).unwrap();
+    }
+    report.write(dir.path()).unwrap();
+    let written = plots::write_all(dir.path(), &trace, &run, cfg.limits.budget_us).unwrap();
+    assert_eq!(written.len(), 3);
+    for name in written
+        .iter()
+        .map(String::as_str)
+        .chain(["report.json", "report.md"])
+    {
+        let len = std::fs::metadata(dir.path().join(name)).unwrap().len();
+        assert!(len > 500, "{name} is {len} bytes");
+    }
+}
+
+#[test]
+fn a_film_off_by_five_percent_fails_accuracy_with_the_reason() {
+    let trace = trace(200, 10_000.0);
+    let mut stepper = ClosedFormStepper::new(true);
+    // Reference film = stepper film / 1.05: relative error exactly 5 %.
+    let mut reference = ClosedFormReference {
+        film_scale: 1.0 / 1.05,
+    };
+    let cfg = config(10, false, 10_000.0);
+    let run = replay(
+        &trace,
+        Parts {
+            stepper: &mut stepper,
+            reference: Some(&mut reference),
+            dry: None,
+        },
+        &cfg,
+        None,
+    )
+    .unwrap();
+    let report =
+        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+    assert!(
+        (report.film_rel_err_p99.unwrap() - 0.05).abs() < 1e-5,
+        "{report:?}"
+    );
+    assert_eq!(report.accuracy_ok, Some(false));
+    assert!(!report.passed());
+    assert!(
+        report.reasons.iter().any(|r| r.contains("central film")),
+        "{:?}",
+        report.reasons
+    );
+    assert_eq!(report.dry_force_rel_err_p99, None);
+}
+
+#[test]
+fn without_reference_accuracy_is_not_checked() {
+    let trace = trace(50, 10_000.0);
+    let mut stepper = ClosedFormStepper::new(true);
+    let cfg = config(0, false, 10_000.0);
+    let run = replay(
+        &trace,
+        Parts {
+            stepper: &mut stepper,
+            reference: None,
+            dry: None,
+        },
+        &cfg,
+        None,
+    )
+    .unwrap();
+    let report =
+        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+    assert_eq!(report.accuracy_ok, None);
+    assert_eq!(report.film_rel_err_p99, None);
+}
+
+#[test]
+fn a_stepper_fault_names_the_sample() {
+    let trace = trace(20, 10_000.0);
+    let mut stepper = ClosedFormStepper::new(true);
+    stepper.fail_at = Some(5);
+    let err = replay(
+        &trace,
+        Parts {
+            stepper: &mut stepper,
+            reference: None,
+            dry: None,
+        },
+        &config(1, false, 10_000.0),
+        None,
+    )
+    .unwrap_err();
+    assert_eq!(err.index, 5);
+    assert_eq!(err.to_string(), "stepper failed at sample 5: injected");
+}
+
+/// Paced at 2 kHz (0.5 ms period) with steps that sleep 1 ms: every step misses its deadline
+/// (sleep never returns early), and the loop cannot finish before 40 × 1 ms.
+#[test]
+fn paced_replay_counts_every_missed_deadline() {
+    let trace = trace(40, 2000.0);
+    let mut stepper = ClosedFormStepper::new(true);
+    stepper.sleep = Some(std::time::Duration::from_millis(1));
+    let run = replay(
+        &trace,
+        Parts {
+            stepper: &mut stepper,
+            reference: None,
+            dry: None,
+        },
+        &config(0, true, 2000.0),
+        None,
+    )
+    .unwrap();
+    let pacing = run.pacing.unwrap();
+    assert_eq!(pacing.misses, 40);
+    assert!(pacing.max_lateness_ns >= 500_000);
+    assert!(pacing.wall_s >= 0.040);
+}
+
+/// Paced at 1 kHz with fast steps: the loop takes at least the trace's duration (39 periods)
+/// because each step waits for its release time.
+#[test]
+fn paced_replay_runs_at_wall_clock_rate() {
+    let trace = trace(40, 1000.0);
+    let mut stepper = ClosedFormStepper::new(true);
+    let run = replay(
+        &trace,
+        Parts {
+            stepper: &mut stepper,
+            reference: None,
+            dry: None,
+        },
+        &config(0, true, 1000.0),
+        None,
+    )
+    .unwrap();
+    assert!(run.pacing.unwrap().wall_s >= 0.039);
+}
