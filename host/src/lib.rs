@@ -3,5 +3,6 @@
 //! solver, datasets and training, and the flexible-shaft simulator.
 
 pub mod config;
+pub mod ehl;
 pub mod rolling;
 pub mod shaft;

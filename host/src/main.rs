@@ -26,6 +26,8 @@ enum Command {
     Static(cli::statics::StaticArgs),
     /// Flexible-shaft simulator: static, modes, campbell, run, sweep.
     Shaft(cli::shaft::ShaftArgs),
+    /// Full numerical EHL line-contact solver.
+    Ehl(cli::ehl::EhlArgs),
 }
 
 fn main() -> std::process::ExitCode {
@@ -34,6 +36,7 @@ fn main() -> std::process::ExitCode {
         Command::Film(args) => cli::film::run(args),
         Command::Static(args) => cli::statics::run(args),
         Command::Shaft(args) => cli::shaft::run(args),
+        Command::Ehl(args) => cli::ehl::run(args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,
