@@ -2,9 +2,8 @@
 //!
 //! This is the one place where the harness meets the product: the core's bearing step, through
 //! the shared [`Kernel`] the firmware runs too, as the [`BearingStepper`]; the same kernel with
-//! the dry film as the dry model; and the host's numerical EHL solver as the
-//! [`AccuracyReference`] — which is not on this branch yet, so `reference` is `None` and the
-//! replay reports accuracy as not checked rather than checking against a stand-in.
+//! the dry film as the dry model; and the host's numerical EHL solver, with the film–load
+//! coupling converged in f64, as the [`AccuracyReference`] ([`crate::reference`]).
 
 use crate::kernel::{FilmKind, Kernel, KernelError, KernelFault};
 use crate::outputs::StepOutputs;
@@ -99,7 +98,7 @@ pub struct Product {
     pub stepper: Box<dyn BearingStepper>,
     /// The same step with the dry model (h ≡ 0).
     pub dry: Option<Box<dyn BearingStepper>>,
-    /// The full numerical solver at the same bearing state (not available yet).
+    /// The full numerical solver at the same bearing state.
     pub reference: Option<Box<dyn AccuracyReference>>,
 }
 
@@ -112,6 +111,6 @@ pub fn product(meta: &TraceMeta, film: FilmChoice, first: &Sample) -> Result<Pro
     Ok(Product {
         stepper: Box::new(stepper),
         dry: Some(Box::new(dry)),
-        reference: None,
+        reference: Some(Box::new(crate::reference::NumericalReference::new(meta)?)),
     })
 }
