@@ -161,3 +161,52 @@ fn slow_run_up_peaks_at_the_campbell_crossing() {
     assert!((r.samples.last().unwrap().spin_speed / end - 1.0).abs() < 1e-12);
     assert!(r.samples[0].spin_speed > start && r.samples[0].spin_speed < start * 1.001);
 }
+
+/// Reference: Newton's second law by finite differences. The unbalance force during a ramp must
+/// be −m_e·d²/dt² [e(cos ψ, sin ψ)], ψ = φ(t) + phase, evaluated here by a central second
+/// difference of the eccentric mass's position along the profile (a different method from the
+/// closed form m e (Ω² cos ψ + Ω̇ sin ψ, Ω² sin ψ − Ω̇ cos ψ) in `loads`).
+#[test]
+fn unbalance_force_during_a_ramp_is_the_inertial_force_of_the_mass() {
+    use crate::shaft::loads::LoadSet;
+    let (me, phase) = (2e-4, 0.7);
+    let set = LoadSet {
+        loads: vec![Load::Unbalance {
+            node: 0,
+            mass_eccentricity: me,
+            phase,
+        }],
+        motor: None,
+    };
+    let profile = SpeedProfile {
+        start: 200.0,
+        end: 1200.0,
+        ramp_start: 0.0,
+        ramp_duration: 0.05,
+    };
+    let h = 1e-6;
+    for &t in &[0.004, 0.021, 0.037] {
+        let mut f = [0.0; 4];
+        let at = SpinAt {
+            angle: profile.angle(t),
+            speed: profile.speed(t),
+            acceleration: profile.acceleration(t),
+        };
+        set.add_forces_at(at, &[0.0; 4], true, &|d| d, &mut f)
+            .unwrap();
+        let pos = |t: f64| {
+            let psi = profile.angle(t) + phase;
+            [psi.cos(), psi.sin()]
+        };
+        let (a, b, c) = (pos(t - h), pos(t), pos(t + h));
+        for k in 0..2 {
+            let accel = (a[k] - 2.0 * b[k] + c[k]) / (h * h);
+            let expected = -me * accel;
+            assert!(
+                (f[k] - expected).abs() < 1e-4 * expected.abs().max(me * 200.0f64.powi(2)),
+                "t = {t}, component {k}: {} vs {expected}",
+                f[k]
+            );
+        }
+    }
+}
