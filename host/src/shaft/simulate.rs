@@ -3,9 +3,9 @@
 //! probes (bearing and loaded nodes) and the bearing reactions, and collect the envelopes the
 //! speed sweep reports. With a ramp ([`RunSettings::spin_speed_end`]) the speed is held through
 //! the settling time and changes linearly over the recorded time ([`SpeedProfile`]); the
-//! gyroscopic matrix, the loads and the bearings follow it at every step. A run is judged steady when the
-//! displacement envelope of the second half of the record differs from the first half's by less
-//! than [`STEADY_TOLERANCE`].
+//! gyroscopic matrix, the loads and the bearings follow it at every step. A run is judged
+//! steady when the displacement envelope of the second half of the record differs from the
+//! first half's by less than [`STEADY_TOLERANCE`] (meaningless during a ramp).
 
 use nalgebra::DVector;
 

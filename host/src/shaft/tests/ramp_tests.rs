@@ -94,7 +94,8 @@ fn mesh_frequency_follows_the_ramp() {
 /// η = (dω_exc/dt)/ω_n² well below ζ², the quasi-stationary regime of passage through
 /// resonance; Markert & Seidler, Int. J. Solids Struct. 38 (2001) 1975–1992) peaks where the
 /// mesh order z·Ω crosses the first lateral natural frequency, within the half-power
-/// half-bandwidth: |Ω_peak/Ω_cross − 1| < ζ. Soft damped linear bearings (3·10⁷ N/m, 2 kN·s/m) so the mode has ζ of a few per cent.
+/// half-bandwidth: |Ω_peak/Ω_cross − 1| < ζ. Soft damped linear bearings (3·10⁷ N/m,
+/// 2 kN·s/m) so the mode has ζ of a few per cent.
 #[test]
 fn slow_run_up_peaks_at_the_campbell_crossing() {
     let model = hub_linear(3e7, 2e3);
