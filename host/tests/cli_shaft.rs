@@ -123,6 +123,18 @@ fn hostile_flags_exit_non_zero_naming_the_flag() {
         "--dt=-1",
     ]);
     assert!(!ok && err.contains("--dt"), "{err}");
+    for (flag, value) in [
+        ("--speed-end-rpm", "nan"),
+        ("--speed-end-rpm", "-100"),
+        ("--record-every", "0"),
+        ("--newton-resolution", "0"),
+        ("--newton-resolution", "inf"),
+    ] {
+        let arg = format!("{flag}={value}");
+        let (ok, _, err) = bearing(&["shaft", "run", "--config", &f, "--speed-rpm", "100", &arg]);
+        assert!(!ok, "{flag} {value} accepted");
+        assert!(err.contains(flag), "{flag} {value}: {err}");
+    }
 }
 
 #[test]

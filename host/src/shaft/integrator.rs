@@ -168,6 +168,8 @@ pub struct Integrator {
     k_eff_inv: DMatrix<f64>,
     /// K*⁻¹ f_const.
     const_response: DVector<f64>,
+    /// f_const (kept to rebuild `const_response` after a speed change).
+    constant_load: DVector<f64>,
     z: DMatrix<f64>,
     s: DMatrix<f64>,
     bearing_dofs: Vec<[usize; 2]>,
@@ -252,33 +254,7 @@ impl Integrator {
         }
         let (alpha, beta, gamma) = scheme.parameters();
         let n = mass.nrows();
-        let c1 = gamma / (beta * dt);
-        let k_eff =
-            &mass / (beta * dt * dt) + &damping * ((1.0 - alpha) * c1) + &stiffness * (1.0 - alpha);
-        let k_eff_inv = k_eff.try_inverse().ok_or(StepError::SingularSystem)?;
-        let op_q = &k_eff_inv * (&mass / (beta * dt * dt) + &damping * ((1.0 - alpha) * c1));
-        let op_v = &k_eff_inv * &damping * (-(1.0 - alpha));
-        let op_hht = (alpha != 0.0).then(|| {
-            (
-                &k_eff_inv * &stiffness * (-alpha),
-                &k_eff_inv * &damping * (-alpha),
-            )
-        });
-        let const_response = &k_eff_inv * &constant_load;
-        let mut z = DMatrix::zeros(n, 2 * nb);
-        for (b, dofs) in bearing_dofs.iter().enumerate() {
-            for (c, &dof) in dofs.iter().enumerate() {
-                z.set_column(2 * b + c, &k_eff_inv.column(dof));
-            }
-        }
-        let mut s = DMatrix::zeros(2 * nb, 2 * nb);
-        for (b, dofs) in bearing_dofs.iter().enumerate() {
-            for (c, &dof) in dofs.iter().enumerate() {
-                for j in 0..2 * nb {
-                    s[(2 * b + c, j)] = z[(dof, j)];
-                }
-            }
-        }
+        let empty = || DMatrix::zeros(0, 0);
         let (time, q, v) = initial;
         let mut me = Integrator {
             alpha,
@@ -288,13 +264,14 @@ impl Integrator {
             spin_speed,
             mass,
             stiffness,
-            op_q,
-            op_v,
-            op_hht,
-            k_eff_inv,
-            const_response,
-            z,
-            s,
+            op_q: empty(),
+            op_v: empty(),
+            op_hht: None,
+            k_eff_inv: empty(),
+            const_response: DVector::zeros(n),
+            constant_load: constant_load.clone(),
+            z: empty(),
+            s: empty(),
             bearing_dofs,
             bearings,
             newton,
@@ -315,6 +292,7 @@ impl Integrator {
             eval_u: [0.0; 2 * MAX_BEARINGS],
             eval_w: [0.0; 2 * MAX_BEARINGS],
         };
+        me.build_operators(&damping)?;
         let mut u = [0.0; 2 * MAX_BEARINGS];
         let mut w = [0.0; 2 * MAX_BEARINGS];
         for (b, d) in me.bearing_dofs.iter().enumerate() {
@@ -338,6 +316,69 @@ impl Integrator {
             .ok_or(StepError::SingularSystem)?;
         me.state.a = chol.solve(&rhs);
         Ok(me)
+    }
+
+    /// Forms K* = M/(βh²) + (1−α)γ/(βh) D + (1−α)K, its inverse and the step operators for the
+    /// linear damping D (the constructor's, or a new one after a speed change).
+    fn build_operators(&mut self, damping: &DMatrix<f64>) -> Result<(), StepError> {
+        let (alpha, beta, gamma, dt) = (self.alpha, self.beta, self.gamma, self.dt);
+        let (mass, stiffness) = (&self.mass, &self.stiffness);
+        let n = mass.nrows();
+        let nb = self.bearing_dofs.len();
+        let c1 = gamma / (beta * dt);
+        let k_eff =
+            mass / (beta * dt * dt) + damping * ((1.0 - alpha) * c1) + stiffness * (1.0 - alpha);
+        let k_eff_inv = k_eff.try_inverse().ok_or(StepError::SingularSystem)?;
+        self.op_q = &k_eff_inv * (mass / (beta * dt * dt) + damping * ((1.0 - alpha) * c1));
+        self.op_v = &k_eff_inv * damping * (-(1.0 - alpha));
+        self.op_hht = (alpha != 0.0).then(|| {
+            (
+                &k_eff_inv * stiffness * (-alpha),
+                &k_eff_inv * damping * (-alpha),
+            )
+        });
+        self.const_response = &k_eff_inv * &self.constant_load;
+        let mut z = DMatrix::zeros(n, 2 * nb);
+        for (b, dofs) in self.bearing_dofs.iter().enumerate() {
+            for (c, &dof) in dofs.iter().enumerate() {
+                z.set_column(2 * b + c, &k_eff_inv.column(dof));
+            }
+        }
+        let mut s = DMatrix::zeros(2 * nb, 2 * nb);
+        for (b, dofs) in self.bearing_dofs.iter().enumerate() {
+            for (c, &dof) in dofs.iter().enumerate() {
+                for j in 0..2 * nb {
+                    s[(2 * b + c, j)] = z[(dof, j)];
+                }
+            }
+        }
+        self.k_eff_inv = k_eff_inv;
+        self.z = z;
+        self.s = s;
+        Ok(())
+    }
+
+    /// Changes the spin speed Ω (rad/s) for the following steps: the bearings see the new
+    /// speed and the operators are rebuilt with the new linear damping D = C + ΩG (given by the
+    /// caller in the integrated coordinates). For a speed ramp this is called before every
+    /// step with the speed at the step's end, so the gyroscopic term of the implicit equation
+    /// is taken at t₁ like every other term of the average-acceleration rule. (With HHT-α the
+    /// α-weighted D v₀ term then also uses the new D: an O(ΔΩ) difference per step.)
+    pub fn set_spin_speed(
+        &mut self,
+        spin_speed: f64,
+        damping: &DMatrix<f64>,
+    ) -> Result<(), StepError> {
+        if spin_speed == self.spin_speed {
+            return Ok(());
+        }
+        self.spin_speed = spin_speed;
+        self.build_operators(damping)
+    }
+
+    /// Current spin speed (rad/s).
+    pub fn spin_speed(&self) -> f64 {
+        self.spin_speed
     }
 
     /// The bearing models (e.g. for their per-roller states after a step).

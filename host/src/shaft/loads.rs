@@ -10,7 +10,9 @@
 //! the radial force on the pinion points along −e_β and, for a pinion driving at +Ω, the
 //! tangential reaction opposes its rotation at the contact, −F_t·e_θ with e_θ = (−sin β, cos β).
 //!
-//! Unbalance (Friswell et al. (2010) §3.6.1): m·e·Ω² (cos(Ωt + φ), sin(Ωt + φ)) at constant Ω.
+//! Unbalance (Friswell et al. (2010) §3.6.1): m·e·Ω² (cos(Ωt + φ), sin(Ωt + φ)) at constant Ω;
+//! during a speed ramp the angular acceleration adds the tangential m·e·Ω̇ term (the inertial
+//! force of the eccentric mass, −m d²/dt² [e(cos ψ, sin ψ)]).
 
 use super::motor::Pmsm;
 
@@ -81,6 +83,17 @@ impl GearMesh {
     }
 }
 
+/// The spin state the loads are evaluated at.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpinAt {
+    /// Spin angle φ (rad).
+    pub angle: f64,
+    /// Spin speed Ω = dφ/dt (rad/s).
+    pub speed: f64,
+    /// Angular acceleration Ω̇ (rad/s²).
+    pub acceleration: f64,
+}
+
 /// All loads of a model plus the motor that drives the gear meshes.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct LoadSet {
@@ -118,7 +131,26 @@ impl LoadSet {
         map: &dyn Fn(usize) -> usize,
         f: &mut [f64],
     ) -> Result<(), super::motor::SpeedOutOfRange> {
-        let angle = spin_speed * time;
+        let at = SpinAt {
+            angle: spin_speed * time,
+            speed: spin_speed,
+            acceleration: 0.0,
+        };
+        self.add_forces_at(at, gravity_vector, include_dynamic, map, f)
+    }
+
+    /// As [`LoadSet::add_forces_mapped`] at a spin state that need not be steady (a speed
+    /// ramp): the unbalance, mesh and ripple phases follow the spin angle φ, their amplitudes
+    /// the instantaneous speed Ω, so the mesh frequency is z·dφ/dt = z·Ω(t).
+    pub fn add_forces_at(
+        &self,
+        at: SpinAt,
+        gravity_vector: &[f64],
+        include_dynamic: bool,
+        map: &dyn Fn(usize) -> usize,
+        f: &mut [f64],
+    ) -> Result<(), super::motor::SpeedOutOfRange> {
+        let (angle, spin_speed) = (at.angle, at.speed);
         for load in &self.loads {
             match *load {
                 Load::Static { node, force } => {
@@ -136,9 +168,13 @@ impl LoadSet {
                     phase,
                 } => {
                     if include_dynamic {
+                        // −m·(acceleration of the mass at e(cos ψ, sin ψ)), ψ = φ + phase:
+                        // m e (Ω² cos ψ + Ω̇ sin ψ, Ω² sin ψ − Ω̇ cos ψ).
                         let amp = mass_eccentricity * spin_speed * spin_speed;
-                        f[map(4 * node)] += amp * (angle + phase).cos();
-                        f[map(4 * node + 1)] += amp * (angle + phase).sin();
+                        let tangential = mass_eccentricity * at.acceleration;
+                        let (s, c) = (angle + phase).sin_cos();
+                        f[map(4 * node)] += amp * c + tangential * s;
+                        f[map(4 * node + 1)] += amp * s - tangential * c;
                     }
                 }
                 Load::GearMesh(mesh) => {

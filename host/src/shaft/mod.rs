@@ -25,6 +25,7 @@ pub mod reduction;
 pub mod roller_bearing;
 pub mod simulate;
 pub mod spectrum;
+pub mod speed_profile;
 pub mod statics;
 pub mod sweep;
 pub mod system;

@@ -67,19 +67,27 @@ pub fn write_run_csv(path: &Path, result: &RunResult) -> std::io::Result<()> {
 
 /// Writes the inner-race kinematics of bearing `probe` in the trace CSV format of `hil-sim`
 /// (hil-sim/src/trace/csv.rs): `# bearing: <id>`, `# lubricant: <id>`, `# sample_rate_hz: <1/Δt>`,
-/// then `time_s,speed_rad_s,x_m,y_m,vx_m_s,vy_m_s`, time from 0 at the first recorded sample.
+/// then `time_s,speed_rad_s,x_m,y_m,vx_m_s,vy_m_s`, time from 0 at the first recorded sample,
+/// speed the spin speed at each sample (it changes along a ramp).
 pub fn write_kinematics_trace(
     path: &Path,
     result: &RunResult,
     probe: usize,
-    spin_speed: f64,
     ids: (&str, &str),
     sample_interval: f64,
 ) -> std::io::Result<()> {
     let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
     writeln!(w, "# bearing: {}", ids.0)?;
     writeln!(w, "# lubricant: {}", ids.1)?;
-    writeln!(w, "# sample_rate_hz: {}", 1.0 / sample_interval)?;
+    // 1/Δt rounded to an integer when it is one up to rounding (1/10⁻⁵ s is 99999.99999999999
+    // in f64): the header then states the rate that was meant.
+    let rate = 1.0 / sample_interval;
+    let rate = if (rate - rate.round()).abs() <= 1e-9 * rate {
+        rate.round()
+    } else {
+        rate
+    };
+    writeln!(w, "# sample_rate_hz: {rate}")?;
     writeln!(w, "# inner-race kinematics from `bearing shaft run`")?;
     writeln!(w, "time_s,speed_rad_s,x_m,y_m,vx_m_s,vy_m_s")?;
     for (k, s) in result.samples.iter().enumerate() {
@@ -89,7 +97,7 @@ pub fn write_kinematics_trace(
             w,
             "{},{},{},{},{},{}",
             k as f64 * sample_interval,
-            spin_speed as f32,
+            s.spin_speed as f32,
             p[0][0] as f32,
             p[0][1] as f32,
             p[1][0] as f32,

@@ -3,7 +3,8 @@
 //!
 //! The core works in f32 with the inner-race state and the cage angle; this adapter keeps the
 //! cage angle in f64, advancing it at the cage speed ω_c = (ω/2)(1 − D/d_m) (PHYSICS.md §2)
-//! between committed steps, so Newton iterations inside a step see the cage at the step's time.
+//! between committed steps (integrated over the step's speed change during a ramp), so Newton
+//! iterations inside a step see the cage at the step's time.
 //! Tilts are not coupled (the shaft passes x, y only; the core gets zero tilt). The tangent
 //! stiffness is the core's radial 2×2 block (film coupling included), the damping the core's
 //! f_damp·K_j matrix. A state the core refuses is reported as an error, never used.
@@ -27,6 +28,8 @@ pub struct RollerBearing {
     /// Cage angle at `commit_time` (rad, in [0, 2π)).
     cage_angle: f64,
     commit_time: f64,
+    /// Spin speed at `commit_time` (None before the first commit: the evaluated speed is used).
+    commit_speed: Option<f64>,
 }
 
 impl RollerBearing {
@@ -54,12 +57,16 @@ impl RollerBearing {
             cage_ratio,
             cage_angle: 0.0,
             commit_time: 0.0,
+            commit_speed: None,
         })
     }
 
     fn cage_angle_at(&self, state: &BearingState) -> f64 {
         let tau = std::f64::consts::TAU;
-        (self.cage_angle + self.cage_ratio * state.spin_speed * (state.time - self.commit_time))
+        // θ_c = ∫ω_c dt over the step by the trapezoidal rule on the spin speed: exact for a
+        // linear speed ramp, and ω_c·Δt at constant speed.
+        let mean_speed = 0.5 * (self.commit_speed.unwrap_or(state.spin_speed) + state.spin_speed);
+        (self.cage_angle + self.cage_ratio * mean_speed * (state.time - self.commit_time))
             .rem_euclid(tau)
     }
 }
@@ -92,6 +99,7 @@ impl BearingModel for RollerBearing {
     fn commit(&mut self, state: &BearingState, _dt: f64) {
         self.cage_angle = self.cage_angle_at(state);
         self.commit_time = state.time;
+        self.commit_speed = Some(state.spin_speed);
     }
 
     fn roller_states(&self) -> Option<Vec<RollerState>> {

@@ -1,15 +1,20 @@
-//! Time response at one constant spin speed: start from the static equilibrium, integrate
-//! through a settling time, then record probes (bearing and loaded nodes) and the bearing
-//! reactions, and collect the envelopes the speed sweep reports. A run is judged steady when the
-//! displacement envelope of the second half of the record differs from the first half's by less
-//! than [`STEADY_TOLERANCE`].
+//! Time response at one constant spin speed, or through a linear speed ramp: start from the
+//! static equilibrium at the (start) speed, integrate through a settling time, then record
+//! probes (bearing and loaded nodes) and the bearing reactions, and collect the envelopes the
+//! speed sweep reports. With a ramp ([`RunSettings::spin_speed_end`]) the speed is held through
+//! the settling time and changes linearly over the recorded time ([`SpeedProfile`]); the
+//! gyroscopic matrix, the loads and the bearings follow it at every step. A run is judged
+//! steady when the displacement envelope of the second half of the record differs from the
+//! first half's by less than [`STEADY_TOLERANCE`] (meaningless during a ramp).
 
 use nalgebra::DVector;
 
 use super::bearing::{BearingReaction, BearingSpec, RollerState};
 use super::integrator::{NewtonSettings, Scheme, StepError};
+use super::loads::SpinAt;
 use super::model::RotorModel;
 use super::operating::{build_bearings, OperatingError};
+use super::speed_profile::SpeedProfile;
 use super::statics::equilibrium;
 use super::system::TimeSystem;
 
@@ -20,8 +25,10 @@ pub const STEADY_TOLERANCE: f64 = 0.02;
 /// Settings of one time response.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunSettings {
-    /// Spin speed (rad/s), constant.
+    /// Spin speed (rad/s): constant, or the start of the ramp.
     pub spin_speed: f64,
+    /// End speed of a linear ramp over the recorded time (rad/s); None: constant speed.
+    pub spin_speed_end: Option<f64>,
     /// Time step (s).
     pub dt: f64,
     /// Time integrated before recording starts (s).
@@ -54,6 +61,8 @@ pub enum RunError {
 pub struct Sample {
     /// Time (s).
     pub time: f64,
+    /// Spin speed at that time (rad/s).
+    pub spin_speed: f64,
     /// Per probe node: displacement [x, y] (m), velocity (m/s), acceleration (m/s²).
     pub probes: Vec<[[f64; 2]; 3]>,
     /// Per bearing: its reaction.
@@ -203,6 +212,12 @@ pub fn run(
         .collect();
     let settle_steps = (settings.settle_time / settings.dt).ceil() as usize;
     let record_steps = (settings.record_time / settings.dt).ceil().max(2.0) as usize;
+    let profile = SpeedProfile {
+        start: omega,
+        end: settings.spin_speed_end.unwrap_or(omega),
+        ramp_start: settle_steps as f64 * settings.dt,
+        ramp_duration: record_steps as f64 * settings.dt,
+    };
     let mut f = DVector::zeros(n);
     let mut samples = Vec::new();
     let mut halves = [Envelope::empty(), Envelope::empty()];
@@ -211,8 +226,17 @@ pub fn run(
     let clock = std::time::Instant::now();
     for step in 0..settle_steps + record_steps {
         let t1 = it.state.time + settings.dt;
+        let speed = profile.speed(t1);
+        if !profile.is_constant() {
+            it.set_spin_speed(speed, &system.damping_at(speed))?;
+        }
+        let at = SpinAt {
+            angle: profile.angle(t1),
+            speed,
+            acceleration: profile.acceleration(t1),
+        };
         system
-            .load(t1, omega, &mut f)
+            .load_at(at, &mut f)
             .map_err(|e| StepError::Load(e.to_string()))?;
         it.step(&f)?;
         max_iter = max_iter.max(it.stats.iterations);
@@ -245,6 +269,7 @@ pub fn run(
                 .collect();
             samples.push(Sample {
                 time: st.time,
+                spin_speed: it.spin_speed(),
                 probes,
                 bearings: it.reactions.clone(),
                 rollers: it

@@ -120,6 +120,29 @@ impl<'a> TimeSystem<'a> {
         )
     }
 
+    /// Time-varying load vector at a spin state (angle, speed, acceleration) into `f`
+    /// (overwritten): as [`TimeSystem::load`] for a speed that changes in time.
+    pub fn load_at(
+        &self,
+        at: super::loads::SpinAt,
+        f: &mut DVector<f64>,
+    ) -> Result<(), SpeedOutOfRange> {
+        f.fill(0.0);
+        self.model.description.loads.add_forces_at(
+            at,
+            self.no_gravity.as_slice(),
+            true,
+            &|d| self.map[d],
+            f.as_mut_slice(),
+        )
+    }
+
+    /// Linear damping D = C + ΩG at spin speed Ω (rad/s) in the integrated coordinates.
+    pub fn damping_at(&self, spin_speed: f64) -> DMatrix<f64> {
+        let (_, _, g, c) = self.matrices();
+        c + g * spin_speed
+    }
+
     /// The constant (gravity) load in the integrated coordinates.
     pub fn constant_load(&self) -> DVector<f64> {
         let g: f64 = self

@@ -133,6 +133,14 @@ struct TimeArgs {
     /// Recorded time (s, > 0).
     #[arg(long, default_value_t = 0.05)]
     duration: f64,
+    /// Keep every n-th step in the outputs (1 … 10⁶): the trace's sample interval is n·dt.
+    #[arg(long, default_value_t = 1)]
+    record_every: usize,
+    /// Newton stall bound (m, in (0, 10⁻⁶]): a correction below it that no longer halves is
+    /// accepted as the bearing model's f32 resolution (such steps are counted in
+    /// `resolution_limited_steps`). Default 1 nm.
+    #[arg(long, default_value_t = NewtonSettings::default().model_resolution)]
+    newton_resolution: f64,
 }
 
 #[derive(Args, Debug)]
@@ -141,9 +149,13 @@ struct RunArgs {
     model: ModelArgs,
     #[command(flatten)]
     time: TimeArgs,
-    /// Spin speed (rpm, ≥ 0).
+    /// Spin speed (rpm, ≥ 0); with --speed-end-rpm the speed at the start of the recording.
     #[arg(long)]
     speed_rpm: f64,
+    /// Ramp the speed linearly from --speed-rpm to this speed (rpm, ≥ 0) over --duration (held
+    /// at --speed-rpm through --settle): a run-up or run-down.
+    #[arg(long)]
+    speed_end_rpm: Option<f64>,
     /// Output prefix: <prefix>.csv, <prefix>_b<i>_rollers.csv, <prefix>_b<i>_trace.csv
     /// (hil-sim trace format), <prefix>_orbit.png, <prefix>_spectrum.png.
     #[arg(long, default_value = "shaft_run")]
@@ -353,6 +365,7 @@ fn cmd_campbell(a: CampbellArgs) -> Result<()> {
     Ok(())
 }
 
+/// Time settings; `omega` the highest speed of the run (sets the default step).
 fn settings(model: &RotorModel, t: &TimeArgs, omega: f64) -> Result<RunSettings> {
     let mesh = mesh_orders(model).into_iter().fold(0.0, f64::max);
     let dt = match t.dt {
@@ -378,13 +391,17 @@ fn settings(model: &RotorModel, t: &TimeArgs, omega: f64) -> Result<RunSettings>
     }
     Ok(RunSettings {
         spin_speed: omega,
+        spin_speed_end: None,
         dt,
         settle_time: settle,
         record_time: duration,
-        record_every: 1,
+        record_every: check_count("record-every", t.record_every, 1, 1_000_000)?,
         scheme,
         reduction_modes: t.reduce,
-        newton: NewtonSettings::default(),
+        newton: NewtonSettings {
+            model_resolution: check("newton-resolution", t.newton_resolution, 0.0, 1e-6, true)?,
+            ..NewtonSettings::default()
+        },
     })
 }
 
@@ -397,7 +414,13 @@ fn with_suffix(prefix: &Path, suffix: &str) -> PathBuf {
 fn cmd_run(a: RunArgs) -> Result<()> {
     let model = load(&a.model)?;
     let omega = rpm_to_rad(check("speed-rpm", a.speed_rpm, 0.0, 1e6, false)?);
-    let s = settings(&model, &a.time, omega)?;
+    let end = match a.speed_end_rpm {
+        Some(v) => Some(rpm_to_rad(check("speed-end-rpm", v, 0.0, 1e6, false)?)),
+        None => None,
+    };
+    let mut s = settings(&model, &a.time, omega.max(end.unwrap_or(0.0)))?;
+    s.spin_speed = omega;
+    s.spin_speed_end = end;
     let r = run_time(&model, &s, None)?;
     let csv = with_suffix(&a.out, ".csv");
     output::write_run_csv(&csv, &r).with_context(|| format!("writing {}", csv.display()))?;
@@ -415,7 +438,6 @@ fn cmd_run(a: RunArgs) -> Result<()> {
             &p,
             &r,
             b,
-            omega,
             (&id, "thesis_oil"),
             s.dt * s.record_every as f64,
         )
@@ -459,7 +481,7 @@ fn cmd_run(a: RunArgs) -> Result<()> {
         Some(k) => reduction_report(&model, &s, k, a.compare_full, &r)?,
     };
     let summary = serde_json::json!({
-        "speed_rpm": a.speed_rpm, "dt_s": s.dt, "steps": r.steps, "n_dof": r.n_dof,
+        "speed_rpm": a.speed_rpm, "speed_end_rpm": a.speed_end_rpm, "dt_s": s.dt, "steps": r.steps, "n_dof": r.n_dof,
         "wall_seconds": r.wall_seconds, "bearing_seconds": r.bearing_seconds,
         "real_time_factor": simulated / r.wall_seconds,
         "max_newton_iterations": r.max_newton_iterations, "steadiness": r.steadiness,

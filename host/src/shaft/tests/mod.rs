@@ -7,5 +7,6 @@ mod element_tests;
 mod hub_tests;
 mod integrator_tests;
 mod modes_tests;
+mod ramp_tests;
 mod response_tests;
 mod rig_tests;

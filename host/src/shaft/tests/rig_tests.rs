@@ -28,6 +28,7 @@ fn nu205_rig_shows_the_outer_race_pass_line() {
     let dt = 1.0 / (40.0 * f_bpo);
     let settings = RunSettings {
         spin_speed: omega,
+        spin_speed_end: None,
         dt,
         settle_time: 0.02,
         record_time: 0.12,
