@@ -8,18 +8,27 @@ use clap::{Parser, Subcommand};
 mod cli;
 
 #[derive(Parser)]
-#[command(name = "bearing", version, about = "Lubricated roller-bearing model: EHL film, bearing forces, shaft simulation")]
+#[command(
+    name = "bearing",
+    version,
+    about = "Lubricated roller-bearing model: EHL film, bearing forces, shaft simulation"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Film training data: generate datasets, check the domain.
+    Dataset(cli::dataset::DatasetArgs),
+}
 
 fn main() -> std::process::ExitCode {
     let cli = Cli::parse();
-    let result: anyhow::Result<()> = match cli.command {};
+    let result: anyhow::Result<()> = match cli.command {
+        Command::Dataset(args) => cli::dataset::run(args),
+    };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,
         Err(err) => {

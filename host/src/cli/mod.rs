@@ -1,1 +1,3 @@
 //! One module per `bearing` subcommand.
+
+pub mod dataset;

@@ -1,0 +1,1 @@
+//! Film network training (placeholder until step 2).
