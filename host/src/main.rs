@@ -22,12 +22,18 @@ struct Cli {
 enum Command {
     /// Film training data: generate datasets, check the domain.
     Dataset(cli::dataset::DatasetArgs),
+    /// Train the film network, run the architecture sweep, evaluate the core models.
+    Train(Box<cli::train::TrainArgs>),
+    /// Write a trained film model into the core as const arrays.
+    Export(cli::export::ExportArgs),
 }
 
 fn main() -> std::process::ExitCode {
     let cli = Cli::parse();
     let result: anyhow::Result<()> = match cli.command {
         Command::Dataset(args) => cli::dataset::run(args),
+        Command::Train(args) => cli::train::run(*args),
+        Command::Export(args) => cli::export::run(args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,
