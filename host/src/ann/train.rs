@@ -159,16 +159,18 @@ struct Problem<'a> {
     state: RefCell<EarlyStop>,
 }
 
+/// Mean squared error; the per-sample terms are computed in parallel but summed in order, so
+/// training is deterministic whatever the thread count.
 fn mse(net: &Mlp, x: &[Vec<f64>], t: &[[f64; 2]]) -> f64 {
-    let s: f64 = x
+    let terms: Vec<f64> = x
         .par_iter()
         .zip(t)
         .map(|(xi, ti)| {
             let y = net.forward(xi);
             (y[0] - ti[0]).powi(2) + (y[1] - ti[1]).powi(2)
         })
-        .sum();
-    s / (2 * t.len()) as f64
+        .collect();
+    terms.iter().sum::<f64>() / (2 * t.len()) as f64
 }
 
 impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {

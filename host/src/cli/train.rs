@@ -316,3 +316,18 @@ fn evaluate(args: EvaluateArgs) -> Result<()> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::parse_arch;
+
+    /// `LxN` and width lists parse; zero, too many or too wide layers and junk are refused.
+    #[test]
+    fn arch_parsing() {
+        assert_eq!(parse_arch("3x14").unwrap(), vec![14, 14, 14]);
+        assert_eq!(parse_arch("14-10").unwrap(), vec![14, 10]);
+        for bad in ["0x5", "2x0", "9x5", "2x65", "abc", "", "3x", "-4"] {
+            assert!(parse_arch(bad).is_err(), "{bad}");
+        }
+    }
+}
