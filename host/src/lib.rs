@@ -1,4 +1,8 @@
-//! Host side of the bearing project (std, f64 where it is a reference).
+//! Host side of the bearing project (std, f64 where it is a reference): configuration files,
+//! the core's bearing at a run-time roller count, and (in their modules) the numerical EHL
+//! solver, datasets and training, and the flexible-shaft simulator.
 
+pub mod config;
+pub mod rolling;
 pub mod ann;
 pub mod dataset;

@@ -20,6 +20,10 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// Film thickness and Hertz figures of one contact, every film model side by side.
+    Film(cli::film::FilmArgs),
+    /// Static equilibrium of a bearing under a radial load (lubricated, and dry with --dry).
+    Static(cli::statics::StaticArgs),
     /// Film training data: generate datasets, check the domain.
     Dataset(cli::dataset::DatasetArgs),
     /// Train the film network, run the architecture sweep, evaluate the core models.
@@ -31,6 +35,8 @@ enum Command {
 fn main() -> std::process::ExitCode {
     let cli = Cli::parse();
     let result: anyhow::Result<()> = match cli.command {
+        Command::Film(args) => cli::film::run(args),
+        Command::Static(args) => cli::statics::run(args),
         Command::Dataset(args) => cli::dataset::run(args),
         Command::Train(args) => cli::train::run(*args),
         Command::Export(args) => cli::export::run(args),

@@ -1,0 +1,91 @@
+//! Static equilibrium of the inner race under an applied radial force.
+//!
+//! Newton's method on the bearing force balance F_bearing(x, y) + F_applied = 0 with the
+//! bearing's own radial stiffness as the Jacobian (F_bearing decreases with displacement, so
+//! J = −K). At zero clearance the unloaded bearing has zero stiffness, so the Newton matrix is
+//! regularised by a small multiple of the nominal roller stiffness and each step is limited to
+//! one micrometre-scale trust length; both vanish from the converged answer, which is
+//! judged on the force residual alone. Not for the real-time loop: it stops when converged.
+
+use super::{Bearing, BearingOutput, StepStatus};
+use crate::film::FilmModel;
+use crate::params::OperatingState;
+
+/// Result of a static solve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Equilibrium {
+    /// Inner-race displacement [x, y] (m).
+    pub displacement_m: [f32; 2],
+    /// |F_bearing + F_applied| at the solution (N).
+    pub residual_n: f32,
+    /// Newton iterations used.
+    pub iterations: usize,
+    /// Residual ≤ tolerance·|F_applied| reached.
+    pub converged: bool,
+}
+
+/// Largest displacement change per Newton iteration (m).
+const TRUST_M: f32 = 5.0e-6;
+
+impl<const Z: usize, const S: usize> Bearing<Z, S> {
+    /// Solve for the displacement at which the bearing carries `applied_force_n` [F_x, F_y] (N)
+    /// acting on the inner race, at the speed and cage angle of `state` (its displacement is
+    /// the start). `film = None` solves the dry bearing. Stops when the force residual is below
+    /// `relative_tolerance·|F|` or after `max_iterations`.
+    pub fn static_equilibrium<F: FilmModel + ?Sized>(
+        &mut self,
+        film: Option<&F>,
+        applied_force_n: [f32; 2],
+        state: &OperatingState,
+        relative_tolerance: f32,
+        max_iterations: usize,
+    ) -> Equilibrium {
+        let magnitude = crate::math::sqrt(
+            applied_force_n[0] * applied_force_n[0] + applied_force_n[1] * applied_force_n[1],
+        );
+        let tolerance = relative_tolerance * magnitude.max(1.0e-3);
+        let nominal = self.roller.nominal_coefficient() * crate::math::pow(1.0e-6, 1.0 / 9.0);
+        let regularisation = 1.0e-3 * nominal;
+        let mut s = *state;
+        let mut result = Equilibrium {
+            displacement_m: s.displacement_m,
+            residual_n: f32::MAX,
+            iterations: 0,
+            converged: false,
+        };
+        for iteration in 0..=max_iterations {
+            let out: BearingOutput<Z> = *match film {
+                Some(f) => self.step(f, &s),
+                None => self.step_dry(&s),
+            };
+            if out.status != StepStatus::Ok {
+                return result;
+            }
+            let rx = out.force_n[0] + applied_force_n[0];
+            let ry = out.force_n[1] + applied_force_n[1];
+            result.displacement_m = s.displacement_m;
+            result.residual_n = crate::math::sqrt(rx * rx + ry * ry);
+            result.iterations = iteration;
+            if result.residual_n <= tolerance {
+                result.converged = true;
+                return result;
+            }
+            // K·Δx = residual (the bearing force drops by K·Δx when the race moves by Δx).
+            let [[kxx, kxy], [kyx, kyy]] = out.radial_stiffness_n_per_m();
+            let (kxx, kyy) = (kxx + regularisation, kyy + regularisation);
+            let det = kxx * kyy - kxy * kyx;
+            if !(det.is_finite() && det > 0.0) {
+                return result;
+            }
+            let mut dx = (kyy * rx - kxy * ry) / det;
+            let mut dy = (kxx * ry - kyx * rx) / det;
+            let length = crate::math::sqrt(dx * dx + dy * dy);
+            if length > TRUST_M {
+                dx *= TRUST_M / length;
+                dy *= TRUST_M / length;
+            }
+            s.displacement_m = [s.displacement_m[0] + dx, s.displacement_m[1] + dy];
+        }
+        result
+    }
+}

@@ -1,0 +1,150 @@
+//! What one bearing step returns: per-roller states, forces, moments, stiffness and damping.
+
+use crate::error::ParamError;
+use crate::film::{FilmSource, Regime};
+
+/// State of one roller after a step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RollerOutput {
+    /// Roller angle θ_j from the x axis (rad, wrapped to (−π, π]).
+    pub angle_rad: f32,
+    /// Geometric approach x·cos θ + y·sin θ − g_r, without film (m).
+    pub geometric_approach_m: f32,
+    /// Elastic approach of the roller middle, δ_j = geometric approach + film (m).
+    pub approach_m: f32,
+    /// Central film at the inner contact h_in (m).
+    pub central_film_in_m: f32,
+    /// Central film at the outer contact h_out (m).
+    pub central_film_out_m: f32,
+    /// Minimum film at the inner contact (m).
+    pub min_film_in_m: f32,
+    /// Minimum film at the outer contact (m).
+    pub min_film_out_m: f32,
+    /// Contact load Q_j = Σ q_k (N), EHL and hydrodynamic alike.
+    pub load_n: f32,
+    /// Viscous damping force F_d = f_damp·K_j·δ̇_j (N).
+    pub damping_force_n: f32,
+    /// Roller moment T_j = Σ q_k x_k (N·m).
+    pub moment_nm: f32,
+    /// Contact stiffness K_j = dQ_j/dδ_j of the solids (N/m).
+    pub contact_stiffness_n_per_m: f32,
+    /// Film-coupled roller stiffness dQ_j/d(geometric approach) (N/m).
+    pub roller_stiffness_n_per_m: f32,
+    /// Regime of the inner contact.
+    pub regime_in: Regime,
+    /// Regime of the outer contact.
+    pub regime_out: Regime,
+    /// Model that served the inner contact.
+    pub film_source_in: FilmSource,
+    /// Model that served the outer contact.
+    pub film_source_out: FilmSource,
+}
+
+impl RollerOutput {
+    /// An unloaded roller with no film.
+    pub const ZERO: RollerOutput = RollerOutput {
+        angle_rad: 0.0,
+        geometric_approach_m: 0.0,
+        approach_m: 0.0,
+        central_film_in_m: 0.0,
+        central_film_out_m: 0.0,
+        min_film_in_m: 0.0,
+        min_film_out_m: 0.0,
+        load_n: 0.0,
+        damping_force_n: 0.0,
+        moment_nm: 0.0,
+        contact_stiffness_n_per_m: 0.0,
+        roller_stiffness_n_per_m: 0.0,
+        regime_in: Regime::Dry,
+        regime_out: Regime::Dry,
+        film_source_in: FilmSource::None,
+        film_source_out: FilmSource::None,
+    };
+}
+
+/// Whether a step computed with its input.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum StepStatus {
+    /// Computed.
+    #[default]
+    Ok,
+    /// The operating state was refused (non-finite or out of range): forces and rollers are
+    /// zero and the warm start is kept. The error names the field.
+    Rejected(ParamError),
+}
+
+/// Result of one bearing step for `Z` rollers.
+///
+/// Generalised coordinates of the inner race are (x, y, tilt about x, tilt about y).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BearingOutput<const Z: usize> {
+    /// Force of the rollers on the inner race [F_x, F_y] (N).
+    pub force_n: [f32; 2],
+    /// Moment of the rollers on the inner race [M_x, M_y] (N·m).
+    pub moment_nm: [f32; 2],
+    /// Stiffness −∂(F_x, F_y, M_x, M_y)/∂(x, y, tilt_x, tilt_y): N/m, N, N·m per rad.
+    pub stiffness: [[f32; 4]; 4],
+    /// Damping −∂(F_x, F_y)/∂(ẋ, ẏ) (N·s/m).
+    pub damping_n_s_per_m: [[f32; 2]; 2],
+    /// Per-roller states.
+    pub rollers: [RollerOutput; Z],
+    /// Whether the step computed.
+    pub status: StepStatus,
+}
+
+impl<const Z: usize> BearingOutput<Z> {
+    /// All zero, status `Ok`.
+    pub const ZERO: Self = Self {
+        force_n: [0.0; 2],
+        moment_nm: [0.0; 2],
+        stiffness: [[0.0; 4]; 4],
+        damping_n_s_per_m: [[0.0; 2]; 2],
+        rollers: [RollerOutput::ZERO; Z],
+        status: StepStatus::Ok,
+    };
+
+    /// The 2×2 radial stiffness block −∂(F_x, F_y)/∂(x, y) (N/m).
+    pub fn radial_stiffness_n_per_m(&self) -> [[f32; 2]; 2] {
+        let [r0, r1, _, _] = self.stiffness;
+        [[r0[0], r0[1]], [r1[0], r1[1]]]
+    }
+
+    /// Largest roller load (N).
+    pub fn max_roller_load_n(&self) -> f32 {
+        self.rollers.iter().fold(0.0, |m, r| m.max(r.load_n))
+    }
+
+    /// Number of contacts (inner and outer, all rollers) served by `source`.
+    pub fn contacts_served_by(&self, source: FilmSource) -> usize {
+        self.rollers
+            .iter()
+            .map(|r| {
+                usize::from(r.film_source_in == source) + usize::from(r.film_source_out == source)
+            })
+            .sum()
+    }
+}
+
+/// Add one roller's share to the stiffness matrix.
+///
+/// Slice k has approach δ_k = aₖ·g + const with aₖ = u + x_k·v, u = (c, s, 0, 0),
+/// v = (0, 0, −s, c); K = Σ_k q'_k aₖaₖᵀ + c_f·b bᵀ with b = Σ_k q'_k aₖ and the film coupling
+/// c_f = H'/(1 − K_j H') (H' = dH/dQ of the film sum, ≤ 0): the roller load depends on the film,
+/// which depends on the roller load.
+pub(crate) fn add_roller_stiffness(
+    k: &mut [[f32; 4]; 4],
+    (c, s): (f32, f32),
+    sums: [f32; 3],
+    film_coupling: f32,
+) {
+    let [s0, s1, s2] = sums;
+    let u = [c, s, 0.0, 0.0];
+    let v = [0.0, 0.0, -s, c];
+    let b = [s0 * c, s0 * s, -s1 * s, s1 * c];
+    for (((row, &ui), &vi), &bi) in k.iter_mut().zip(u.iter()).zip(v.iter()).zip(b.iter()) {
+        for (((kij, &uj), &vj), &bj) in row.iter_mut().zip(u.iter()).zip(v.iter()).zip(b.iter()) {
+            *kij +=
+                s0 * ui * uj + s1 * (ui * vj + vi * uj) + s2 * vi * vj + film_coupling * bi * bj;
+        }
+    }
+}

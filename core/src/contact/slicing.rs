@@ -1,0 +1,229 @@
+//! Slicing: the load, moment and stiffness of one roller from its slices (PHYSICS.md §3).
+//!
+//! Slice k (centre x_k from the roller middle, length l/n_s) sees the approach
+//! δ_k = δ + x_k·ψ − 2·P(x_k), with δ the roller's approach at its middle, ψ its tilt relative to
+//! the raceway (tan ψ ≈ ψ: below 3·10⁻⁵ relative error for |ψ| ≤ 0.01 rad) and P the crown drop
+//! (on both contacts, hence 2P). Only slices with δ_k > 0 carry load.
+
+use super::law::{BoundLaw, ContactLaw};
+use crate::params::BearingGeometry;
+
+/// Load state of one roller, with the slice sums the stiffness matrix needs.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RollerLoad {
+    /// Roller load Q = Σ q_k (N).
+    pub load_n: f32,
+    /// Roller moment T = Σ q_k x_k (N·m).
+    pub moment_nm: f32,
+    /// Contact stiffness K = dQ/dδ = Σ dq_k/dδ (N/m).
+    pub stiffness_n_per_m: f32,
+    /// Σ (dq_k/dδ)·x_k = dT/dδ = dQ/dψ (N).
+    pub stiffness_moment_n: f32,
+    /// Σ (dq_k/dδ)·x_k² = dT/dψ (N·m).
+    pub stiffness_tilt_nm: f32,
+    /// d²Q/dδ² = Σ d²q_k/dδ² (N/m²): the curvature used to fit a whole-roller power law.
+    pub stiffness_derivative_n_per_m2: f32,
+}
+
+/// A roller cut into `S` slices, bound to its contact law.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SlicedRoller<const S: usize> {
+    law: BoundLaw,
+    slice_length_m: f32,
+    /// Slice centres x_k (m).
+    positions_m: [f32; S],
+    /// −2·P(x_k): the crown's contribution to each slice's approach (m, ≤ 0).
+    crown_offsets_m: [f32; S],
+    /// Approach at the roller middle where the first slice touches without tilt (m, ≥ 0).
+    touch_approach_m: f32,
+}
+
+impl<const S: usize> SlicedRoller<S> {
+    /// Slice a roller of `geometry` with reduced modulus `E'` (Pa) under `law`.
+    ///
+    /// `S = 0` is allowed and carries no load.
+    pub fn new(geometry: &BearingGeometry, reduced_modulus_pa: f32, law: ContactLaw) -> Self {
+        let l = geometry.roller_length_m();
+        let bound = BoundLaw::new(
+            law,
+            l,
+            reduced_modulus_pa,
+            geometry.inner_reduced_radius_m(),
+            geometry.outer_reduced_radius_m(),
+        );
+        let n = S.max(1) as f32;
+        let slice_length_m = l / n;
+        let mut positions_m = [0.0; S];
+        let mut crown_offsets_m = [0.0; S];
+        let mut touch = f32::MAX;
+        for (k, (x, c)) in positions_m
+            .iter_mut()
+            .zip(crown_offsets_m.iter_mut())
+            .enumerate()
+        {
+            *x = (k as f32 + 0.5) * slice_length_m - 0.5 * l;
+            *c = -2.0 * geometry.crown_drop_m(*x);
+            touch = touch.min(-*c);
+        }
+        Self {
+            law: bound,
+            slice_length_m,
+            positions_m,
+            crown_offsets_m,
+            touch_approach_m: if S == 0 { 0.0 } else { touch },
+        }
+    }
+
+    /// Slice centres x_k (m).
+    pub fn positions_m(&self) -> &[f32; S] {
+        &self.positions_m
+    }
+
+    /// Approach at which the first slice touches an untilted roller (m).
+    pub fn touch_approach_m(&self) -> f32 {
+        self.touch_approach_m
+    }
+
+    /// Whole-roller coefficient c of Q = c·δ^(10/9) for a straight roller under the Palmgren
+    /// law (N/m^(10/9)).
+    pub fn nominal_coefficient(&self) -> f32 {
+        self.law.palmgren_coefficient() * self.slice_length_m * S as f32
+    }
+
+    /// Approach at the roller middle where the first slice touches at tilt `ψ` (rad) (m).
+    #[inline]
+    pub fn touch_approach_tilted_m(&self, tilt_rad: f32) -> f32 {
+        let lead = self
+            .positions_m
+            .iter()
+            .zip(self.crown_offsets_m.iter())
+            .fold(f32::MIN, |m, (&x, &c)| m.max(x * tilt_rad + c));
+        if S == 0 {
+            0.0
+        } else {
+            -lead
+        }
+    }
+
+    /// Load, moment and stiffness for approach `δ` (m) at the roller middle and tilt `ψ` (rad).
+    /// Every slice is evaluated whatever the input, so the cost is fixed.
+    #[inline]
+    pub fn evaluate(&self, approach_m: f32, tilt_rad: f32) -> RollerLoad {
+        let mut out = RollerLoad::default();
+        for (&x, &c) in self.positions_m.iter().zip(self.crown_offsets_m.iter()) {
+            let (w, dw, d2w) = self.law.load_per_length(approach_m + x * tilt_rad + c);
+            let q = w * self.slice_length_m;
+            let dq = dw * self.slice_length_m;
+            out.stiffness_derivative_n_per_m2 += d2w * self.slice_length_m;
+            out.load_n += q;
+            out.moment_nm += q * x;
+            out.stiffness_n_per_m += dq;
+            out.stiffness_moment_n += dq * x;
+            out.stiffness_tilt_nm += dq * x * x;
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::Crown;
+
+    fn geometry(crown: Crown) -> BearingGeometry {
+        BearingGeometry::new(0.060, 0.0088, 0.015, 17, crown, 0.0).unwrap()
+    }
+
+    const E: f32 = 230.77e9;
+
+    #[test]
+    fn uniform_approach_gives_the_same_load_for_1_10_and_50_slices() {
+        let g = geometry(Crown::None);
+        for law in [ContactLaw::Palmgren, ContactLaw::Lundberg] {
+            let q1 = SlicedRoller::<1>::new(&g, E, law)
+                .evaluate(5e-6, 0.0)
+                .load_n;
+            let q10 = SlicedRoller::<10>::new(&g, E, law)
+                .evaluate(5e-6, 0.0)
+                .load_n;
+            let q50 = SlicedRoller::<50>::new(&g, E, law)
+                .evaluate(5e-6, 0.0)
+                .load_n;
+            assert!(q1 > 100.0);
+            assert!((q10 / q1 - 1.0).abs() < 1e-3, "{law:?}: {q1} {q10}");
+            assert!((q50 / q1 - 1.0).abs() < 1e-3, "{law:?}: {q1} {q50}");
+        }
+    }
+
+    #[test]
+    fn tilted_roller_moment_matches_the_integral_of_the_load_distribution() {
+        // Closed form for a straight roller under the power law w = c·(δ + xψ)^(10/9), fully
+        // loaded: Q = c/(ψ·a)·[(δ+ψl/2)^a − (δ−ψl/2)^a] with a = 19/9, and
+        // T = ∫x·w dx = c·[ (u^(a+1)/(a+1) − δ·u^a/a) / ψ² ] between the ends, u = δ + xψ.
+        let g = geometry(Crown::None);
+        let roller = SlicedRoller::<400>::new(&g, E, ContactLaw::Palmgren);
+        let c = roller.law.palmgren_coefficient() as f64;
+        let (delta, psi, l) = (6e-6f64, 4e-4f64, 0.015f64);
+        let a = 19.0 / 9.0;
+        let prim_q = |u: f64| c * u.powf(a) / (a * psi);
+        let prim_t =
+            |u: f64| c * (u.powf(a + 1.0) / (a + 1.0) - delta * u.powf(a) / a) / (psi * psi);
+        let (lo, hi) = (delta - psi * l / 2.0, delta + psi * l / 2.0);
+        assert!(lo > 0.0, "fully loaded case");
+        let q_exact = prim_q(hi) - prim_q(lo);
+        let t_exact = prim_t(hi) - prim_t(lo);
+        let r = roller.evaluate(delta as f32, psi as f32);
+        assert!(
+            (r.load_n as f64 / q_exact - 1.0).abs() < 1e-3,
+            "{} vs {q_exact}",
+            r.load_n
+        );
+        assert!(
+            (r.moment_nm as f64 / t_exact - 1.0).abs() < 2e-3,
+            "{} vs {t_exact}",
+            r.moment_nm
+        );
+        // And the 10-slice default is within 1 % of the integral.
+        let r10 =
+            SlicedRoller::<10>::new(&g, E, ContactLaw::Palmgren).evaluate(delta as f32, psi as f32);
+        assert!(
+            (r10.moment_nm as f64 / t_exact - 1.0).abs() < 0.01,
+            "{} vs {t_exact}",
+            r10.moment_nm
+        );
+    }
+
+    #[test]
+    fn stiffness_is_the_derivative_of_load_and_moment() {
+        let g = geometry(Crown::Logarithmic { scale: 1.0 });
+        let roller = SlicedRoller::<10>::new(&g, E, ContactLaw::Palmgren);
+        let (d, p) = (8e-6f32, 3e-4f32);
+        let r = roller.evaluate(d, p);
+        let h = 1e-8f32;
+        let dq = (roller.evaluate(d + h, p).load_n - roller.evaluate(d - h, p).load_n) / (2.0 * h);
+        assert!(
+            (r.stiffness_n_per_m / dq - 1.0).abs() < 2e-3,
+            "{} vs {dq}",
+            r.stiffness_n_per_m
+        );
+        let hp = 1e-6f32;
+        let dt = (roller.evaluate(d, p + hp).moment_nm - roller.evaluate(d, p - hp).moment_nm)
+            / (2.0 * hp);
+        assert!(
+            (r.stiffness_tilt_nm / dt - 1.0).abs() < 5e-3,
+            "{} vs {dt}",
+            r.stiffness_tilt_nm
+        );
+    }
+
+    #[test]
+    fn crown_unloads_the_ends() {
+        let g = geometry(Crown::Logarithmic { scale: 1.0 });
+        let crowned = SlicedRoller::<10>::new(&g, E, ContactLaw::Palmgren);
+        let straight = SlicedRoller::<10>::new(&geometry(Crown::None), E, ContactLaw::Palmgren);
+        let a = crowned.evaluate(5e-6, 0.0).load_n;
+        let b = straight.evaluate(5e-6, 0.0).load_n;
+        assert!(a < b && a > 0.5 * b, "{a} {b}");
+        assert!(crowned.touch_approach_m() > 0.0);
+    }
+}

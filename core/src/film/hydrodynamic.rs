@@ -1,0 +1,77 @@
+//! Hydrodynamic (rigid, iso-viscous) film of a lightly loaded or separated roller.
+//!
+//! Martin's solution with the Reynolds exit condition (Martin 1916; Hamrock, *Fundamentals of
+//! Fluid Film Lubrication*, §21.2): a rigid cylinder on a plane with gap h₀ at the outlet carries
+//! w = 4.896·η₀u_mR/h₀ per unit length, i.e. h₀/R = 4.896·U/W. At X = 0 the film is
+//! h_c/R = 6·U/W, Moes' rigid iso-viscous asymptote H_RI = 3/M (PHYSICS.md §5.1).
+
+use super::{ContactInput, Film, FilmModel, FilmSource};
+
+/// Martin's minimum-film constant: h₀/R = 4.896·U/W.
+pub const MARTIN_MINIMUM: f32 = 4.896;
+/// Martin's central-film constant: h_c/R = 6·U/W (Moes H_RI = 3/M).
+pub const MARTIN_CENTRAL: f32 = 6.0;
+
+/// Martin's central film h_c = 6·η₀u_m·R·l/Q (m) for load `Q` (N).
+pub fn martin_central_m(contact: &ContactInput) -> f32 {
+    MARTIN_CENTRAL
+        * contact.viscosity_pa_s
+        * contact.entrainment_speed_m_s
+        * contact.reduced_radius_m
+        / contact.load_per_length_n_per_m()
+}
+
+/// Load per unit length (N/m) that Martin's solution carries on an outlet gap `h₀` (m).
+pub fn martin_load_per_length(
+    viscosity_pa_s: f32,
+    entrainment_speed_m_s: f32,
+    reduced_radius_m: f32,
+    gap_m: f32,
+) -> f32 {
+    MARTIN_MINIMUM * viscosity_pa_s * entrainment_speed_m_s * reduced_radius_m / gap_m
+}
+
+/// Martin's hydrodynamic film model.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Hydrodynamic;
+
+impl FilmModel for Hydrodynamic {
+    fn name(&self) -> &'static str {
+        "hydrodynamic"
+    }
+
+    fn film(&self, contact: &ContactInput) -> Film {
+        let central_m = martin_central_m(contact);
+        let film = Film {
+            central_m,
+            minimum_m: central_m * (MARTIN_MINIMUM / MARTIN_CENTRAL),
+            source: FilmSource::Regression,
+        };
+        if contact.is_valid() && central_m.is_finite() {
+            film
+        } else {
+            Film::ZERO
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn load_and_film_are_inverse() {
+        let c = ContactInput {
+            load_n: 20.0,
+            length_m: 0.01,
+            entrainment_speed_m_s: 5.0,
+            reduced_radius_m: 3e-3,
+            reduced_modulus_pa: 2.3e11,
+            pressure_viscosity_pa_inv: 2e-8,
+            viscosity_pa_s: 0.05,
+        };
+        let f = Hydrodynamic.film(&c);
+        let w = martin_load_per_length(0.05, 5.0, 3e-3, f.minimum_m);
+        assert!((w * 0.01 / 20.0 - 1.0).abs() < 1e-5);
+    }
+}
