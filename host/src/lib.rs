@@ -5,4 +5,5 @@
 pub mod ann;
 pub mod config;
 pub mod dataset;
+pub mod ehl;
 pub mod rolling;

@@ -30,6 +30,8 @@ enum Command {
     Train(Box<cli::train::TrainArgs>),
     /// Write a trained film model into the core as const arrays.
     Export(cli::export::ExportArgs),
+    /// Full numerical EHL line-contact solver.
+    Ehl(cli::ehl::EhlArgs),
 }
 
 fn main() -> std::process::ExitCode {
@@ -40,6 +42,7 @@ fn main() -> std::process::ExitCode {
         Command::Dataset(args) => cli::dataset::run(args),
         Command::Train(args) => cli::train::run(*args),
         Command::Export(args) => cli::export::run(args),
+        Command::Ehl(args) => cli::ehl::run(args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

@@ -3,8 +3,9 @@
 
 use std::path::PathBuf;
 
-use anyhow::{bail, Result};
-use bearing_host::dataset::{self, reference, Domain, GenerateOptions, SolverInfo};
+use anyhow::Result;
+use bearing_host::dataset::{self, numerical, reference, Domain, GenerateOptions, SolverInfo};
+use bearing_host::ehl;
 use clap::{Args, Subcommand, ValueEnum};
 
 /// `bearing dataset …`
@@ -67,16 +68,16 @@ pub fn run(args: DatasetArgs) -> Result<()> {
 
 fn generate(args: GenerateArgs) -> Result<()> {
     let command = std::env::args().collect::<Vec<_>>().join(" ");
+    // The accuracy-reference settings of the solver (Roelands, Dowson–Higginson density,
+    // 801 nodes, PHYSICS.md §5.2 tolerances).
+    let ehl_options = ehl::SolverOptions::default();
     let solver_info = match args.solver {
         SolverChoice::Moes => SolverInfo {
             name: "moes".into(),
             version: format!("bearing-host {} moes-1992", env!("CARGO_PKG_VERSION")),
             options: serde_json::json!({"formula": "Moes 1992 central; minimum = Moes central x DH/DT"}),
         },
-        SolverChoice::Numerical => bail!(
-            "--solver numerical: the numerical EHL solver (bearing_host::ehl) is not merged on this branch yet; \
-             use --solver moes for a pipeline test"
-        ),
+        SolverChoice::Numerical => numerical::solver_info(&ehl_options),
     };
     let options = GenerateOptions {
         n: args.n as usize,
@@ -89,7 +90,9 @@ fn generate(args: GenerateArgs) -> Result<()> {
     };
     let summary = match args.solver {
         SolverChoice::Moes => dataset::generate(&args.out, &options, dataset::moes_solver)?,
-        SolverChoice::Numerical => unreachable!("refused above"),
+        SolverChoice::Numerical => {
+            dataset::generate(&args.out, &options, |c| numerical::solve(c, &ehl_options))?
+        }
     };
     eprintln!(
         "{}: {} records resumed, {} written, {} failed in total",

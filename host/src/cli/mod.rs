@@ -2,6 +2,8 @@
 
 pub mod common;
 pub mod dataset;
+pub mod ehl;
+pub mod ehl_plot;
 pub mod export;
 pub mod film;
 pub mod statics;

@@ -7,6 +7,7 @@
 //! - [`file`]: the dataset file format (metadata header + one record per case).
 //! - [`generate`]: deterministic, parallel, resumable generation over a solver closure.
 //! - [`formulas`]: regression and Moes formulas (f64), the latter the pipeline stand-in target.
+//! - [`numerical`]: the numerical EHL solver as the dataset solver.
 //! - [`reference`]: check that the reference machines of PHYSICS.md §6 lie in the domain.
 
 pub mod domain;
@@ -14,6 +15,7 @@ pub mod file;
 pub mod formulas;
 pub mod generate;
 pub mod lhs;
+pub mod numerical;
 pub mod reference;
 
 use serde::{Deserialize, Serialize};

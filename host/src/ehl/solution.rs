@@ -1,0 +1,154 @@
+//! A converged EHL solution: the film and pressure figures everybody uses, the profiles and
+//! how the solve went.
+
+use super::newton::{NewtonReport, NewtonWorkspace};
+use super::{ContactCase, SolverOptions};
+use std::io::Write;
+
+/// Dimensionless profiles on the grid: X = x/b, P = p/p_h, H = hR/b².
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Profile {
+    pub x: Vec<f64>,
+    pub pressure: Vec<f64>,
+    pub film: Vec<f64>,
+}
+
+/// Result of a converged solve (SI unless stated).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct EhlSolution {
+    /// The case solved.
+    pub case: ContactCase,
+    /// Film at X = 0 (h_c), m.
+    pub central_film_m: f64,
+    /// Minimum film h_min, m (parabolic refinement around the smallest nodal film).
+    pub min_film_m: f64,
+    /// Where h_min sits, in units of b (X = x/b).
+    pub min_film_x: f64,
+    /// Maximum pressure (the outlet spike at high load), Pa.
+    pub max_pressure_pa: f64,
+    /// Where the maximum pressure sits, X = x/b.
+    pub max_pressure_x: f64,
+    /// Maximum Hertz pressure p_h, Pa.
+    pub hertz_pressure_pa: f64,
+    /// Hertz half-width b, m.
+    pub hertz_half_width_m: f64,
+    /// Film exit (cavitation) point: first node downstream of the pressure maximum with P = 0.
+    pub exit_x: f64,
+    /// Rigid-body separation H₀ (dimensionless).
+    pub separation_dimensionless: f64,
+    /// Newton iterations in total (including continuation).
+    pub iterations: usize,
+    /// Last Σ|ΔP|/ΣP.
+    pub pressure_change: f64,
+    /// |∫P dX − π/2|/(π/2).
+    pub load_error: f64,
+    /// RMS scaled Reynolds residual.
+    pub reynolds_residual: f64,
+    /// Wall time of the solve, s.
+    pub wall_time_s: f64,
+    /// Number of grid nodes.
+    pub nodes: usize,
+    /// Profiles (dimensionless).
+    pub profile: Profile,
+}
+
+impl EhlSolution {
+    pub(crate) fn from_state(
+        case: &ContactCase,
+        opts: &SolverOptions,
+        ws: &NewtonWorkspace,
+        iterations: usize,
+        report: &NewtonReport,
+        wall_time_s: f64,
+    ) -> Self {
+        let x = &ws.nodes;
+        let (p, h) = (&ws.p, &ws.h);
+        let scale = case.film_scale_m();
+        let b = case.hertz_half_width_m();
+        let ph = case.hertz_pressure_pa();
+        let (mut imin, mut hmin) = (0, f64::INFINITY);
+        for (i, &v) in h.iter().enumerate() {
+            if v < hmin {
+                hmin = v;
+                imin = i;
+            }
+        }
+        let (xmin, hmin) = parabola_min(x, h, imin);
+        let (mut imax, mut pmax) = (0, f64::NEG_INFINITY);
+        for (i, &v) in p.iter().enumerate() {
+            if v > pmax {
+                pmax = v;
+                imax = i;
+            }
+        }
+        let exit = (imax..p.len())
+            .find(|&i| p[i] <= 0.0)
+            .unwrap_or(p.len() - 1);
+        Self {
+            case: *case,
+            central_film_m: ws.central_film(opts.elastic) * scale,
+            min_film_m: hmin * scale,
+            min_film_x: xmin,
+            max_pressure_pa: pmax * ph,
+            max_pressure_x: x[imax],
+            hertz_pressure_pa: ph,
+            hertz_half_width_m: b,
+            exit_x: x[exit],
+            separation_dimensionless: ws.h0,
+            iterations,
+            pressure_change: report.pressure_change,
+            load_error: report.load_error,
+            reynolds_residual: report.reynolds_residual,
+            wall_time_s,
+            nodes: x.len(),
+            profile: Profile {
+                x: x.clone(),
+                pressure: p.clone(),
+                film: h.clone(),
+            },
+        }
+    }
+
+    /// Writes the profile as CSV: x_m, x_over_b, pressure_pa, p_over_ph, hertz_pa, film_m.
+    pub fn write_profile_csv<W: Write>(&self, mut out: W) -> std::io::Result<()> {
+        writeln!(
+            out,
+            "x_m,x_over_b,pressure_pa,p_over_ph,hertz_pressure_pa,film_m"
+        )?;
+        let scale = self.case.film_scale_m();
+        for i in 0..self.profile.x.len() {
+            let x = self.profile.x[i];
+            let hz = (1.0 - x * x).max(0.0).sqrt();
+            writeln!(
+                out,
+                "{:.9e},{:.6},{:.9e},{:.6e},{:.9e},{:.9e}",
+                x * self.hertz_half_width_m,
+                x,
+                self.profile.pressure[i] * self.hertz_pressure_pa,
+                self.profile.pressure[i],
+                hz * self.hertz_pressure_pa,
+                self.profile.film[i] * scale
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// Vertex of the parabola through nodes i−1, i, i+1 (non-uniform), clamped to that bracket.
+fn parabola_min(x: &[f64], y: &[f64], i: usize) -> (f64, f64) {
+    if i == 0 || i + 1 >= x.len() {
+        return (x[i], y[i]);
+    }
+    let (x0, x1, x2) = (x[i - 1], x[i], x[i + 1]);
+    let (y0, y1, y2) = (y[i - 1], y[i], y[i + 1]);
+    let d01 = (y1 - y0) / (x1 - x0);
+    let d12 = (y2 - y1) / (x2 - x1);
+    let a = (d12 - d01) / (x2 - x0);
+    if a <= 0.0 {
+        return (x1, y1);
+    }
+    let bcoef = d01 - a * (x0 + x1);
+    let xv = (-bcoef / (2.0 * a)).clamp(x0, x2);
+    let yv = y1 + d01 * (xv - x1) + a * (xv - x0) * (xv - x1);
+    (xv, yv.min(y1))
+}
