@@ -4,7 +4,7 @@
 //! the accuracy targets on its held-out test set.
 //!
 //! The core holds the model trained on numerical EHL solutions (`data/ann/numerical_*`, Roelands +
-//! Dowson–Higginson, 801 nodes; a partial dataset: 528 of 800 planned cases, 408 solved). The
+//! Dowson–Higginson, 801 nodes; 800 cases, 620 solved, 180 recorded failures). The
 //! pipeline model trained on the Moes stand-in (`data/ann/pipeline_moes_*`) is checked on the
 //! host against its closed-form reference.
 
@@ -104,10 +104,9 @@ fn core_int_within_bounds_of_f32() {
     }
 }
 
-/// The accuracy targets on the held-out numerical test set (61 cases), core models:
-/// central film R² ≥ 0.9995, median ≤ 0.5 %, max ≤ 5 %; minimum film with twice the error
-/// bounds; every test case served by the network, not the fallback. The p99 ≤ 2 % is
-/// NOT asserted: it is not met (one test case at 3.6 %, which with 61 cases is also the p99).
+/// The accuracy targets on the held-out numerical test set (93 cases), core models:
+/// central film R² ≥ 0.9995, median ≤ 0.5 %, p99 ≤ 2 %, max ≤ 5 %; minimum film with twice
+/// the error bounds; every test case served by the network, not the fallback.
 #[test]
 fn numerical_model_meets_accuracy_targets() {
     let m = model();
