@@ -58,7 +58,11 @@ impl Slices {
         };
         let mut positions_m = [0.0; SLICES];
         let mut crown_offsets_m = [0.0; SLICES];
-        for (k, (x, c)) in positions_m.iter_mut().zip(crown_offsets_m.iter_mut()).enumerate() {
+        for (k, (x, c)) in positions_m
+            .iter_mut()
+            .zip(crown_offsets_m.iter_mut())
+            .enumerate()
+        {
             *x = (k as f64 + 0.5) * l / SLICES as f64 - 0.5 * l;
             // ISO/TS 16281 logarithmic crown (PHYSICS.md §3), on both contacts.
             let r = 2.0 * *x / l;
@@ -108,7 +112,13 @@ impl NumericalReference {
     }
 
     /// Central film (m) of one contact at roller load `load_n`, warm-started when possible.
-    fn film(&mut self, roller: usize, outer: bool, load_n: f64, speed_rad_s: f32) -> Result<f64, String> {
+    fn film(
+        &mut self,
+        roller: usize,
+        outer: bool,
+        load_n: f64,
+        speed_rad_s: f32,
+    ) -> Result<f64, String> {
         let input = self.params.contact_input(outer, load_n as f32, speed_rad_s);
         let case = ContactCase::new(
             load_n / f64::from(input.length_m),
@@ -128,7 +138,12 @@ impl NumericalReference {
             Some(previous) => self.solver.solve_from(&case, previous),
             None => self.solver.solve(&case),
         }
-        .map_err(|e| format!("roller {roller} {} contact at {load_n:.1} N: {e}", if outer { "outer" } else { "inner" }))?;
+        .map_err(|e| {
+            format!(
+                "roller {roller} {} contact at {load_n:.1} N: {e}",
+                if outer { "outer" } else { "inner" }
+            )
+        })?;
         let h = solution.central_film_m;
         *slot = Some(solution);
         Ok(h)
@@ -138,7 +153,9 @@ impl NumericalReference {
     fn hertz_pressure(&self, load_n: f64, speed_rad_s: f32) -> f64 {
         let c = self.params.contact_input(false, load_n as f32, speed_rad_s);
         let w = load_n / f64::from(c.length_m);
-        (w * f64::from(c.reduced_modulus_pa) / (2.0 * std::f64::consts::PI * f64::from(c.reduced_radius_m))).sqrt()
+        (w * f64::from(c.reduced_modulus_pa)
+            / (2.0 * std::f64::consts::PI * f64::from(c.reduced_radius_m)))
+        .sqrt()
     }
 }
 
@@ -147,7 +164,11 @@ impl AccuracyReference for NumericalReference {
         "numerical EHL (Roelands + Dowson–Higginson), converged film–load coupling, f64".into()
     }
 
-    fn reference(&mut self, sample: &Sample, stepped: &StepOutputs) -> Result<ReferenceOutputs, StepFault> {
+    fn reference(
+        &mut self,
+        sample: &Sample,
+        stepped: &StepOutputs,
+    ) -> Result<ReferenceOutputs, StepFault> {
         let fault = |reason: String| StepFault { reason };
         let z = stepped.rollers;
         if self.previous.len() != z {
@@ -167,12 +188,14 @@ impl AccuracyReference for NumericalReference {
             film_outer_m: vec![f64::NAN; z],
         };
         for j in 0..z {
-            let theta = f64::from(stepped.cage_angle_rad) + std::f64::consts::TAU * j as f64 / z as f64;
+            let theta =
+                f64::from(stepped.cage_angle_rad) + std::f64::consts::TAU * j as f64 / z as f64;
             let (s, c) = theta.sin_cos();
             let geometric = x * c + y * s - clearance;
             let tilt = tilt_y * c - tilt_x * s;
             let core_load = f64::from(stepped.roller_load_n.get(j).copied().unwrap_or(0.0));
-            let loaded = core_load > 0.0 && self.hertz_pressure(core_load, sample.speed_rad_s) >= MIN_HERTZ_PRESSURE_PA;
+            let loaded = core_load > 0.0
+                && self.hertz_pressure(core_load, sample.speed_rad_s) >= MIN_HERTZ_PRESSURE_PA;
             let (load, stiffness) = if loaded {
                 // Fixed point Q = Q_slices(δ_geo + h_in(Q) + h_out(Q)), started at the core's load.
                 let mut q = core_load;
@@ -203,7 +226,12 @@ impl AccuracyReference for NumericalReference {
             } else {
                 // Outside the EHL reference: the core's load enters the force unchanged.
                 let approach = f64::from(stepped.roller_approach_m.get(j).copied().unwrap_or(0.0));
-                let (_, k) = slices.load(approach + f64::from(stepped.film_inner_m.get(j).copied().unwrap_or(0.0)) + f64::from(stepped.film_outer_m.get(j).copied().unwrap_or(0.0)), tilt);
+                let (_, k) = slices.load(
+                    approach
+                        + f64::from(stepped.film_inner_m.get(j).copied().unwrap_or(0.0))
+                        + f64::from(stepped.film_outer_m.get(j).copied().unwrap_or(0.0)),
+                    tilt,
+                );
                 (core_load, k)
             };
             let roller_force = (load + damping * stiffness * (vx * c + vy * s)).max(0.0);

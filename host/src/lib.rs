@@ -2,7 +2,9 @@
 //! the core's bearing at a run-time roller count, and (in their modules) the numerical EHL
 //! solver, datasets and training, and the flexible-shaft simulator.
 
+pub mod ann;
 pub mod config;
+pub mod dataset;
 pub mod ehl;
 pub mod rolling;
 pub mod shaft;

@@ -26,6 +26,12 @@ enum Command {
     Static(cli::statics::StaticArgs),
     /// Flexible-shaft simulator: static, modes, campbell, run, sweep.
     Shaft(cli::shaft::ShaftArgs),
+    /// Film training data: generate datasets, check the domain.
+    Dataset(cli::dataset::DatasetArgs),
+    /// Train the film network, run the architecture sweep, evaluate the core models.
+    Train(Box<cli::train::TrainArgs>),
+    /// Write a trained film model into the core as const arrays.
+    Export(cli::export::ExportArgs),
     /// Full numerical EHL line-contact solver.
     Ehl(cli::ehl::EhlArgs),
 }
@@ -36,6 +42,9 @@ fn main() -> std::process::ExitCode {
         Command::Film(args) => cli::film::run(args),
         Command::Static(args) => cli::statics::run(args),
         Command::Shaft(args) => cli::shaft::run(args),
+        Command::Dataset(args) => cli::dataset::run(args),
+        Command::Train(args) => cli::train::run(*args),
+        Command::Export(args) => cli::export::run(args),
         Command::Ehl(args) => cli::ehl::run(args),
     };
     match result {

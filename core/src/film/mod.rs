@@ -10,6 +10,8 @@
 //! `2 / [(1−ν₁²)/E₁ + (1−ν₂²)/E₂]`, `R` the reduced radius in the rolling direction,
 //! loads are per roller (N) over the effective length `l` (m).
 
+pub mod ann;
+
 /// Everything the isothermal line-contact film depends on (PHYSICS.md §5.3: solid density and
 /// Poisson's ratio do not enter once `E'` is given).
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,8 +1,11 @@
 //! One module per `bearing` subcommand.
 
 pub mod common;
+pub mod dataset;
 pub mod ehl;
 pub mod ehl_plot;
+pub mod export;
 pub mod film;
 pub mod shaft;
 pub mod statics;
+pub mod train;

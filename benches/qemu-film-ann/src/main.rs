@@ -1,0 +1,314 @@
+//! Instruction counts of the core film networks on QEMU's Cortex-M4.
+//!
+//! Run: `cd benches/qemu-film-ann && cargo run --release` (needs the thumbv7em-none-eabihf target
+//! and qemu-system-arm). With `-icount shift=0` every guest instruction is 1 ns of virtual time
+//! (EMBEDDED.md); TIM2 of QEMU's STM32F405 model counts virtual nanoseconds at prescaler 0, so its
+//! counter difference is an instruction count (calibrated here on 1000 `nop`). Counts are
+//! instructions, not Cortex-M4 cycles. For each contact — 20 from the committed pipeline dataset,
+//! one out of the domain, one hostile — it prints the counts of `AnnInt::film`, `AnnF32::film` and
+//! of the networks alone; they must be the same for every contact.
+#![no_std]
+#![no_main]
+
+use bearing_core::film::ann::{prepare, AnnF32, AnnInt};
+use bearing_core::film::{ContactInput, FilmModel};
+use core::hint::black_box;
+use core::ptr::{read_volatile, write_volatile};
+use cortex_m_rt::entry;
+use cortex_m_semihosting::{debug, hprintln};
+
+#[panic_handler]
+fn panic(_: &core::panic::PanicInfo) -> ! {
+    debug::exit(debug::EXIT_FAILURE);
+    loop {}
+}
+
+/// RCC APB1 clock enable (RM0090 §7.3.13, bit 0 = TIM2) and TIM2 registers (RM0090 §18.4).
+const RCC_APB1ENR: usize = 0x4002_3840;
+const TIM2: usize = 0x4000_0000;
+const TIM_CR1: usize = 0x00;
+const TIM_EGR: usize = 0x14;
+const TIM_CNT: usize = 0x24;
+const TIM_PSC: usize = 0x28;
+const TIM_ARR: usize = 0x2C;
+
+fn write(address: usize, value: u32) {
+    // SAFETY: RCC/TIM2 registers of the STM32F405 (and QEMU's model), used by nothing else here.
+    unsafe { write_volatile(address as *mut u32, value) }
+}
+
+#[inline(always)]
+fn now() -> u32 {
+    // SAFETY: TIM2's counter register; reading it has no side effect.
+    unsafe { read_volatile((TIM2 + TIM_CNT) as *const u32) }
+}
+
+#[inline(never)]
+fn nops_1000() -> u32 {
+    let s = now();
+    // SAFETY: `nop` only.
+    unsafe {
+        core::arch::asm!(
+            ".rept 1000",
+            "nop",
+            ".endr",
+            options(nomem, nostack, preserves_flags)
+        )
+    };
+    now().wrapping_sub(s)
+}
+
+#[inline(never)]
+fn nops_2000() -> u32 {
+    let s = now();
+    // SAFETY: `nop` only.
+    unsafe {
+        core::arch::asm!(
+            ".rept 2000",
+            "nop",
+            ".endr",
+            options(nomem, nostack, preserves_flags)
+        )
+    };
+    now().wrapping_sub(s)
+}
+
+static CASES: [ContactInput; 22] = [
+    ContactInput {
+        load_n: 4705.284,
+        length_m: 0.01252697,
+        entrainment_speed_m_s: 23.57517,
+        reduced_radius_m: 0.009410606,
+        reduced_modulus_pa: 216977700000.0,
+        pressure_viscosity_pa_inv: 2.776479e-08,
+        viscosity_pa_s: 0.03420908,
+    },
+    ContactInput {
+        load_n: 897.088,
+        length_m: 0.03595392,
+        entrainment_speed_m_s: 3.895301,
+        reduced_radius_m: 0.001592684,
+        reduced_modulus_pa: 218796000000.0,
+        pressure_viscosity_pa_inv: 1.172581e-08,
+        viscosity_pa_s: 0.00438811,
+    },
+    ContactInput {
+        load_n: 204.5222,
+        length_m: 0.01661619,
+        entrainment_speed_m_s: 0.6639914,
+        reduced_radius_m: 0.0006167324,
+        reduced_modulus_pa: 240815800000.0,
+        pressure_viscosity_pa_inv: 1.292919e-08,
+        viscosity_pa_s: 0.0007749371,
+    },
+    ContactInput {
+        load_n: 4010.125,
+        length_m: 0.002541737,
+        entrainment_speed_m_s: 16.11131,
+        reduced_radius_m: 0.005441556,
+        reduced_modulus_pa: 219066800000.0,
+        pressure_viscosity_pa_inv: 1.398745e-08,
+        viscosity_pa_s: 0.0006930171,
+    },
+    ContactInput {
+        load_n: 1192.942,
+        length_m: 0.004035643,
+        entrainment_speed_m_s: 2.692231,
+        reduced_radius_m: 0.008048226,
+        reduced_modulus_pa: 233602600000.0,
+        pressure_viscosity_pa_inv: 1.66055e-08,
+        viscosity_pa_s: 0.04326667,
+    },
+    ContactInput {
+        load_n: 498.2187,
+        length_m: 0.003274469,
+        entrainment_speed_m_s: 2.212222,
+        reduced_radius_m: 0.0005578277,
+        reduced_modulus_pa: 213346300000.0,
+        pressure_viscosity_pa_inv: 1.492448e-08,
+        viscosity_pa_s: 0.001561909,
+    },
+    ContactInput {
+        load_n: 493.8165,
+        length_m: 0.01073739,
+        entrainment_speed_m_s: 5.614878,
+        reduced_radius_m: 0.006718986,
+        reduced_modulus_pa: 226707300000.0,
+        pressure_viscosity_pa_inv: 1.52431e-08,
+        viscosity_pa_s: 0.002742717,
+    },
+    ContactInput {
+        load_n: 343.207,
+        length_m: 0.03020922,
+        entrainment_speed_m_s: 9.055709,
+        reduced_radius_m: 0.0001000691,
+        reduced_modulus_pa: 230552000000.0,
+        pressure_viscosity_pa_inv: 1.150183e-08,
+        viscosity_pa_s: 0.003800693,
+    },
+    ContactInput {
+        load_n: 1456.957,
+        length_m: 0.03614268,
+        entrainment_speed_m_s: 1.26459,
+        reduced_radius_m: 0.003110728,
+        reduced_modulus_pa: 233410300000.0,
+        pressure_viscosity_pa_inv: 1.229793e-08,
+        viscosity_pa_s: 0.000589194,
+    },
+    ContactInput {
+        load_n: 753.9769,
+        length_m: 0.02833082,
+        entrainment_speed_m_s: 0.6295577,
+        reduced_radius_m: 0.0001535393,
+        reduced_modulus_pa: 215507900000.0,
+        pressure_viscosity_pa_inv: 2.590449e-08,
+        viscosity_pa_s: 0.07387788,
+    },
+    ContactInput {
+        load_n: 370.9426,
+        length_m: 0.002576111,
+        entrainment_speed_m_s: 1.736978,
+        reduced_radius_m: 0.006994869,
+        reduced_modulus_pa: 233197500000.0,
+        pressure_viscosity_pa_inv: 1.03301e-08,
+        viscosity_pa_s: 0.001635783,
+    },
+    ContactInput {
+        load_n: 2326.507,
+        length_m: 0.01587095,
+        entrainment_speed_m_s: 0.8967426,
+        reduced_radius_m: 0.001091325,
+        reduced_modulus_pa: 248769400000.0,
+        pressure_viscosity_pa_inv: 2.110183e-08,
+        viscosity_pa_s: 0.002335189,
+    },
+    ContactInput {
+        load_n: 235.3203,
+        length_m: 0.003428872,
+        entrainment_speed_m_s: 13.59911,
+        reduced_radius_m: 0.0004473454,
+        reduced_modulus_pa: 223303900000.0,
+        pressure_viscosity_pa_inv: 1.886203e-08,
+        viscosity_pa_s: 0.004521955,
+    },
+    ContactInput {
+        load_n: 492.3283,
+        length_m: 0.002164494,
+        entrainment_speed_m_s: 21.08559,
+        reduced_radius_m: 0.006125536,
+        reduced_modulus_pa: 200118600000.0,
+        pressure_viscosity_pa_inv: 2.185048e-08,
+        viscosity_pa_s: 0.07275066,
+    },
+    ContactInput {
+        load_n: 164.0271,
+        length_m: 0.01795609,
+        entrainment_speed_m_s: 1.773821,
+        reduced_radius_m: 0.0002077245,
+        reduced_modulus_pa: 229335600000.0,
+        pressure_viscosity_pa_inv: 1.341836e-08,
+        viscosity_pa_s: 0.0008405258,
+    },
+    ContactInput {
+        load_n: 3558.383,
+        length_m: 0.01188014,
+        entrainment_speed_m_s: 5.352039,
+        reduced_radius_m: 0.01676278,
+        reduced_modulus_pa: 209803900000.0,
+        pressure_viscosity_pa_inv: 2.705093e-08,
+        viscosity_pa_s: 0.0009971792,
+    },
+    ContactInput {
+        load_n: 594.9034,
+        length_m: 0.002230669,
+        entrainment_speed_m_s: 14.40861,
+        reduced_radius_m: 0.01484284,
+        reduced_modulus_pa: 204524000000.0,
+        pressure_viscosity_pa_inv: 1.092654e-08,
+        viscosity_pa_s: 0.004059929,
+    },
+    ContactInput {
+        load_n: 2104.736,
+        length_m: 0.008438085,
+        entrainment_speed_m_s: 0.8027121,
+        reduced_radius_m: 0.005537739,
+        reduced_modulus_pa: 225686900000.0,
+        pressure_viscosity_pa_inv: 2.312157e-08,
+        viscosity_pa_s: 0.01219121,
+    },
+    ContactInput {
+        load_n: 801.5942,
+        length_m: 0.005179963,
+        entrainment_speed_m_s: 28.64209,
+        reduced_radius_m: 0.01163476,
+        reduced_modulus_pa: 208059000000.0,
+        pressure_viscosity_pa_inv: 1.655783e-08,
+        viscosity_pa_s: 0.07018368,
+    },
+    ContactInput {
+        load_n: 2957.475,
+        length_m: 0.01446754,
+        entrainment_speed_m_s: 0.9507556,
+        reduced_radius_m: 0.006378948,
+        reduced_modulus_pa: 211613300000.0,
+        pressure_viscosity_pa_inv: 1.198157e-08,
+        viscosity_pa_s: 0.008128658,
+    },
+    ContactInput {
+        load_n: 1e5,
+        length_m: 0.01,
+        entrainment_speed_m_s: 5.0,
+        reduced_radius_m: 0.003,
+        reduced_modulus_pa: 2.3e11,
+        pressure_viscosity_pa_inv: 2e-8,
+        viscosity_pa_s: 0.04,
+    },
+    ContactInput {
+        load_n: f32::NAN,
+        length_m: -1.0,
+        entrainment_speed_m_s: 0.0,
+        reduced_radius_m: f32::INFINITY,
+        reduced_modulus_pa: 2.3e11,
+        pressure_viscosity_pa_inv: 2e-8,
+        viscosity_pa_s: 0.04,
+    },
+];
+
+fn count<T>(f: impl FnOnce() -> T, empty: u32) -> u32 {
+    let s = now();
+    let _ = black_box(f());
+    now().wrapping_sub(s).wrapping_sub(empty)
+}
+
+#[entry]
+fn main() -> ! {
+    write(RCC_APB1ENR, 1);
+    write(TIM2 + TIM_PSC, 0);
+    write(TIM2 + TIM_ARR, u32::MAX);
+    write(TIM2 + TIM_EGR, 1);
+    write(TIM2 + TIM_CR1, 1);
+    let calibration = nops_2000().wrapping_sub(nops_1000());
+    hprintln!(
+        "calibration: 1000 nop -> {} counts (must be 1000)",
+        calibration
+    );
+    let empty = count(|| 0u32, 0);
+    for (i, c) in CASES.iter().enumerate() {
+        let p = prepare(c);
+        let int_film = count(|| AnnInt.film(black_box(c)), empty);
+        let f32_film = count(|| AnnF32.film(black_box(c)), empty);
+        let int_net = count(|| AnnInt::network(black_box(&p.features)), empty);
+        let f32_net = count(|| AnnF32::network(black_box(&p.features)), empty);
+        let f = AnnInt.film(c);
+        hprintln!(
+            "contact {}: AnnInt::film {} AnnF32::film {} int network {} f32 network {} (source {}, h_c {:e} m)",
+            i, int_film, f32_film, int_net, f32_net, f.source as u8, f.central_m
+        );
+    }
+    debug::exit(if calibration == 1000 {
+        debug::EXIT_SUCCESS
+    } else {
+        debug::EXIT_FAILURE
+    });
+    loop {}
+}

@@ -1,0 +1,164 @@
+//! Fixed-cost f32 elementary functions for the network: the same instruction sequence for every
+//! argument (no data-dependent branches, no library calls whose cost varies — `libm::tanhf`
+//! varies by ±25 %, EMBEDDED.md), accurate to a few f32 ulps over the range the network uses.
+//!
+//! - `ln`: exponent/mantissa split with the mantissa folded into [√½, √2) by integer arithmetic
+//!   (the reduction of musl's `logf`), then `ln m = 2 atanh(s)`, `s = (m−1)/(m+1)`, as an odd
+//!   series to s⁹ (|s| ≤ 0.172, truncation < 1e-9). Returns a finite value for *every* bit pattern
+//!   (zero, negative, ∞, NaN give meaningless but finite numbers); callers guard validity.
+//! - `exp2`: argument clamped to [−126, 126], split into nearest integer k (by the 1.5·2²³
+//!   rounding constant) and f ∈ [−½, ½]; `2^f = e^{f ln 2}` by its Taylor polynomial of degree 7
+//!   (truncation < 1e-8), `2^k` assembled in the exponent bits.
+//! - `tanh x = (e^{2x} − 1)/(e^{2x} + 1)` on x clamped to ±9 (tanh 9 = 1 − 3·10⁻⁸);
+//!   `logistic x = 1/(1 + e^{−x})` on x clamped to ±30.
+
+/// 1.5·2²³: adding and subtracting it rounds an f32 of magnitude < 2²² to the nearest integer.
+const ROUNDING: f32 = 12_582_912.0;
+
+/// Branch-free clamp (`f32::clamp` panics on bad bounds and `max`/`min` may become libcalls
+/// without an FPU `vmaxnm`).
+#[inline(always)]
+pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
+    let x = if x < lo { lo } else { x };
+    if x > hi {
+        hi
+    } else {
+        x
+    }
+}
+
+/// Natural logarithm (see the module doc); finite for every input.
+#[inline]
+pub fn ln(x: f32) -> f32 {
+    let ix = x.to_bits().wrapping_add(0x3f80_0000 - 0x3f35_04f3);
+    let k = ((ix >> 23) as i32).wrapping_sub(0x7f);
+    let m = f32::from_bits((ix & 0x007f_ffff).wrapping_add(0x3f35_04f3));
+    let f = m - 1.0;
+    let s = f / (2.0 + f);
+    let s2 = s * s;
+    let series =
+        s * (2.0 + s2 * (2.0 / 3.0 + s2 * (2.0 / 5.0 + s2 * (2.0 / 7.0 + s2 * (2.0 / 9.0)))));
+    k as f32 * core::f32::consts::LN_2 + series
+}
+
+/// e^t for |t| ≤ ½ ln 2 + ε: Taylor polynomial of degree 7 (truncation < 1e-8).
+#[inline(always)]
+fn exp_reduced(t: f32) -> f32 {
+    1.0 + t
+        * (1.0
+            + t * (1.0 / 2.0
+                + t * (1.0 / 6.0
+                    + t * (1.0 / 24.0
+                        + t * (1.0 / 120.0 + t * (1.0 / 720.0 + t * (1.0 / 5040.0)))))))
+}
+
+/// 2^k for an integral f32 k in [−126, 127], assembled in the exponent bits.
+#[inline(always)]
+fn pow2i(k: f32) -> f32 {
+    f32::from_bits(((k as i32).wrapping_add(127) as u32) << 23)
+}
+
+/// 2^x (see the module doc); NaN in, NaN out.
+#[inline]
+pub fn exp2(x: f32) -> f32 {
+    let x = clamp(x, -126.0, 126.0);
+    let k = (x + ROUNDING) - ROUNDING;
+    exp_reduced((x - k) * core::f32::consts::LN_2) * pow2i(k)
+}
+
+/// ln 2 split for Cody & Waite's reduction (Cody & Waite 1980, *Software Manual for the
+/// Elementary Functions*): the high part has trailing zero bits so `k·LN2_HI` is exact.
+const LN2_HI: f32 = 0.693_145_75;
+const LN2_LO: f32 = 1.428_606_8e-6;
+
+/// e^x with Cody–Waite reduction `r = x − k ln 2`, `k = round(x/ln 2)`; x clamped to ±87.
+#[inline]
+pub fn exp(x: f32) -> f32 {
+    let x = clamp(x, -87.0, 87.0);
+    let k = (x * core::f32::consts::LOG2_E + ROUNDING) - ROUNDING;
+    let r = (x - k * LN2_HI) - k * LN2_LO;
+    exp_reduced(r) * pow2i(k)
+}
+
+/// Hyperbolic tangent.
+#[inline]
+pub fn tanh(x: f32) -> f32 {
+    let e = exp(2.0 * clamp(x, -9.0, 9.0));
+    (e - 1.0) / (e + 1.0)
+}
+
+/// Logistic sigmoid.
+#[inline]
+pub fn logistic(x: f32) -> f32 {
+    1.0 / (1.0 + exp(-clamp(x, -30.0, 30.0)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Reference: libm (correctly rounded to ~1 ulp). Relative error over 40 decades.
+    #[test]
+    fn ln_matches_libm() {
+        let mut x = 1e-20f32;
+        while x < 1e20 {
+            let (got, want) = (ln(x), libm::logf(x));
+            assert!(
+                (got - want).abs() <= 2e-7 * want.abs().max(1.0),
+                "ln({x}) = {got}, libm {want}"
+            );
+            x *= 1.37;
+        }
+    }
+
+    /// Reference: libm `exp2f`/`expf`; relative error ≤ 4 ulp over the clamped range.
+    #[test]
+    fn exp_matches_libm() {
+        let mut x = -86.0f32;
+        while x < 86.0 {
+            let (got, want) = (exp(x), libm::expf(x));
+            assert!(
+                (got / want - 1.0).abs() < 5e-7,
+                "exp({x}) = {got}, libm {want}"
+            );
+            let (got, want) = (exp2(x), libm::exp2f(x));
+            assert!(
+                (got / want - 1.0).abs() < 5e-7,
+                "exp2({x}) = {got}, libm {want}"
+            );
+            x += 0.173;
+        }
+    }
+
+    /// Reference: libm tanhf and 1/(1+expf(−x)); absolute error ≤ 3e-7 (activations live in
+    /// [−1, 1]).
+    #[test]
+    fn activations_match_libm() {
+        let mut x = -40.0f32;
+        while x < 40.0 {
+            assert!((tanh(x) - libm::tanhf(x)).abs() < 3e-7, "tanh({x})");
+            assert!(
+                (logistic(x) - 1.0 / (1.0 + libm::expf(-x))).abs() < 3e-7,
+                "logistic({x})"
+            );
+            x += 0.0371;
+        }
+    }
+
+    /// Hostile bit patterns give finite logarithms (the guard relies on it).
+    #[test]
+    fn ln_is_finite_for_every_pattern() {
+        for x in [
+            0.0,
+            -0.0,
+            -1.0,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            f32::MIN_POSITIVE / 4.0,
+            f32::MAX,
+        ] {
+            assert!(ln(x).is_finite(), "ln({x})");
+        }
+    }
+}

@@ -1,0 +1,152 @@
+//! Integer inference (TFLite-style symmetric quantisation, EMBEDDED.md): int16 weights and
+//! activations, i64 accumulators, per-layer requantisation by a Q23 multiplier and a right
+//! shift with rounding and saturation, hidden activations by a 1025-point lookup table with
+//! linear interpolation.
+//!
+//! Scales (real = scale · q): inputs and tanh/logistic activations use 1/32767; a layer's
+//! weights `s_w = max|W|/32767`; its biases are stored at the accumulator scale `s_in·s_w`. The
+//! requantisation maps the accumulator to the table's input scale (tanh: 8/32768, i.e. the table
+//! spans [−8, 8); logistic: 16/32768) or to the output scale, multiplying by
+//! `s_in·s_w/s_target = multiplier · 2^−shift`. The host quantiser guarantees
+//! `|acc| < 2⁴⁰` and `multiplier < 2²³`, so the product fits in i64; all arithmetic is
+//! wrapping or saturating, so nothing here can panic.
+
+/// Number of table segments is `2^LUT_SEGMENT_BITS`.
+pub const LUT_SEGMENT_BITS: u32 = 10;
+/// Table length: one point per segment boundary.
+pub const LUT_LEN: usize = (1 << LUT_SEGMENT_BITS) + 1;
+/// Input codes per segment (65536 codes / 1024 segments).
+const CODES_PER_SEGMENT_BITS: u32 = 16 - LUT_SEGMENT_BITS;
+
+/// An activation lookup table: `table[k] = round(32767 · f(x_k))`, `x_k = (64k − 32768) · s_z`.
+pub type Lut = [i16; LUT_LEN];
+
+/// Quantise a normalised input (nominally in [−1, 1]) to Q15 with round-to-nearest and
+/// saturation; NaN gives 0.
+#[inline]
+pub fn quantise_input(x: f32) -> i16 {
+    let v = super::fastmath::clamp(x * 32767.0, -32768.0, 32767.0);
+    // 1.5·2²³ rounding constant: round half to even, exact for |v| < 2²².
+    let r = (v + 12_582_912.0) - 12_582_912.0;
+    r as i16
+}
+
+/// `round(acc · multiplier · 2^−shift)` saturated to i16.
+#[inline(always)]
+pub fn requantize(acc: i64, multiplier: i32, shift: u32) -> i16 {
+    let prod = acc.wrapping_mul(i64::from(multiplier));
+    let half = 1i64.wrapping_shl(shift.wrapping_sub(1));
+    let q = prod.wrapping_add(half).wrapping_shr(shift);
+    q.clamp(i64::from(i16::MIN), i64::from(i16::MAX)) as i16
+}
+
+/// Table lookup with linear interpolation between the two neighbouring points.
+#[inline(always)]
+pub fn lut_lookup(table: &Lut, z: i16) -> i16 {
+    let u = (i32::from(z) + 32768) as u32; // 0 ..= 65535
+    let idx = ((u >> CODES_PER_SEGMENT_BITS) as usize) & ((1 << LUT_SEGMENT_BITS) - 1);
+    let frac = (u & ((1 << CODES_PER_SEGMENT_BITS) - 1)) as i32;
+    let a = i32::from(table.get(idx).copied().unwrap_or(0));
+    let b = i32::from(table.get(idx + 1).copied().unwrap_or(0));
+    let step = ((b - a) * frac + (1 << (CODES_PER_SEGMENT_BITS - 1))) >> CODES_PER_SEGMENT_BITS;
+    (a + step) as i16
+}
+
+/// A quantised dense layer with `I` inputs and `O` outputs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DenseInt<const I: usize, const O: usize> {
+    /// `weights[o][i]`, scale `s_w`.
+    pub weights: [[i16; I]; O],
+    /// Biases at the accumulator scale `s_in·s_w`.
+    pub bias: [i64; O],
+    /// Q23 requantisation multiplier.
+    pub multiplier: i32,
+    /// Right shift of the requantisation.
+    pub shift: u32,
+}
+
+impl<const I: usize, const O: usize> DenseInt<I, O> {
+    /// Accumulators `b + Σ w·x` (i16·i16 products are exact in i32).
+    #[inline]
+    pub fn accumulate(&self, x: &[i16; I]) -> [i64; O] {
+        let mut out = [0i64; O];
+        for ((acc, row), b) in out.iter_mut().zip(&self.weights).zip(&self.bias) {
+            *acc = row.iter().zip(x).fold(*b, |s, (w, v)| {
+                s.wrapping_add(i64::from(i32::from(*w) * i32::from(*v)))
+            });
+        }
+        out
+    }
+
+    /// Requantised accumulators (the output layer, or the table input).
+    #[inline]
+    pub fn forward_linear(&self, x: &[i16; I]) -> [i16; O] {
+        let acc = self.accumulate(x);
+        let mut out = [0i16; O];
+        for (o, a) in out.iter_mut().zip(acc) {
+            *o = requantize(a, self.multiplier, self.shift);
+        }
+        out
+    }
+
+    /// Hidden layer with a table activation.
+    #[inline]
+    pub fn forward_lut(&self, x: &[i16; I], table: &Lut) -> [i16; O] {
+        let mut z = self.forward_linear(x);
+        for v in z.iter_mut() {
+            *v = lut_lookup(table, *v);
+        }
+        z
+    }
+
+    /// Hidden ReLU layer (requantised straight to the activation scale).
+    #[inline]
+    pub fn forward_relu(&self, x: &[i16; I]) -> [i16; O] {
+        let mut z = self.forward_linear(x);
+        for v in z.iter_mut() {
+            *v = (*v).max(0);
+        }
+        z
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Requantisation against exact rational arithmetic: acc · m / 2^s rounded half up, and
+    /// saturation at the i16 limits.
+    #[test]
+    fn requantize_rounds_and_saturates() {
+        let m = 5_000_000; // ≈ 0.596 in Q23
+        for acc in [-1_000_000_007i64, -12345, -1, 0, 1, 77, 99_999_999, 1 << 39] {
+            let exact = (acc as f64) * (m as f64) / 2f64.powi(23 + 10);
+            let want = (exact + 0.5).floor().clamp(-32768.0, 32767.0) as i16;
+            assert_eq!(requantize(acc, m, 33), want, "acc {acc}");
+        }
+    }
+
+    /// A table of the identity f(x) = x/8 on [−8, 8) interpolates exactly (linear data), and the
+    /// end points are reached.
+    #[test]
+    fn lut_interpolates_linear_data_exactly() {
+        let table: Lut =
+            core::array::from_fn(|k| ((64 * k as i32 - 32768) / 8).clamp(-32768, 32767) as i16);
+        for z in [-32768i16, -32767, -100, -1, 0, 1, 63, 64, 12345, 32767] {
+            let want = (f64::from(z) / 8.0).round() as i16;
+            assert!((lut_lookup(&table, z) - want).abs() <= 1, "z {z}");
+        }
+    }
+
+    /// Input quantisation: ±1 → ±32767, saturation beyond, NaN → 0, round to nearest.
+    #[test]
+    fn input_quantisation() {
+        assert_eq!(quantise_input(1.0), 32767);
+        assert_eq!(quantise_input(-1.0), -32767);
+        assert_eq!(quantise_input(5.0), 32767);
+        assert_eq!(quantise_input(-5.0), -32768);
+        assert_eq!(quantise_input(f32::NAN), 0);
+        assert_eq!(quantise_input(0.25), 8192); // 8191.75 → 8192
+        assert_eq!(quantise_input(-0.25), -8192);
+    }
+}

@@ -1,0 +1,158 @@
+//! The architecture study of PHYSICS.md §5.3 (1–4 hidden layers × 10–20 neurons ×
+//! tanh/logistic/ReLU × 600–5000 samples): train each combination on the first `N` samples of a
+//! dataset (own 70/15/15 split) and tabulate its held-out test accuracy and training time.
+
+use indicatif::{ProgressBar, ProgressStyle};
+use serde::{Deserialize, Serialize};
+
+use super::metrics::FilmErrors;
+use super::mlp::Activation;
+use super::pipeline::split_samples;
+use super::train::{train, Samples, TrainOptions};
+
+/// The grid.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SweepConfig {
+    /// Hidden-layer counts.
+    pub layers: Vec<usize>,
+    /// Neurons per hidden layer.
+    pub neurons: Vec<usize>,
+    /// Activations.
+    pub activations: Vec<Activation>,
+    /// Sample counts (first N solved records).
+    pub sample_sizes: Vec<usize>,
+    /// Everything else (inputs, target, regularisation, epochs, seed).
+    pub base: TrainOptions,
+}
+
+impl SweepConfig {
+    /// The full published grid: 1–4 layers × {10, 15, 20} × 3 activations × {600, 1000, 2000, 5000}.
+    pub fn full(base: TrainOptions) -> Self {
+        Self {
+            layers: vec![1, 2, 3, 4],
+            neurons: vec![10, 15, 20],
+            activations: vec![Activation::Tanh, Activation::Logistic, Activation::Relu],
+            sample_sizes: vec![600, 1000, 2000, 5000],
+            base,
+        }
+    }
+
+    /// The CI subset: 1–2 layers × {10, 14} × tanh/ReLU × 600 samples, ≤ 100 epochs.
+    pub fn quick(mut base: TrainOptions) -> Self {
+        base.max_epochs = base.max_epochs.min(100);
+        Self {
+            layers: vec![1, 2],
+            neurons: vec![10, 14],
+            activations: vec![Activation::Tanh, Activation::Relu],
+            sample_sizes: vec![600],
+            base,
+        }
+    }
+}
+
+/// One trained combination.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SweepRow {
+    /// Hidden layers.
+    pub layers: usize,
+    /// Neurons per layer.
+    pub neurons: usize,
+    /// Activation.
+    pub activation: Activation,
+    /// Samples used (train + validation + test).
+    pub samples: usize,
+    /// Trainable parameters.
+    pub parameters: usize,
+    /// Epochs run.
+    pub epochs: usize,
+    /// Training time (s).
+    pub train_seconds: f64,
+    /// Central-film test errors.
+    pub central: FilmErrors,
+    /// Minimum-film test errors.
+    pub minimum: FilmErrors,
+}
+
+/// Run the grid (sample sizes larger than the data are skipped).
+pub fn run_sweep(samples: &Samples, config: &SweepConfig, progress: bool) -> Vec<SweepRow> {
+    let sizes: Vec<usize> = config
+        .sample_sizes
+        .iter()
+        .copied()
+        .filter(|&n| n <= samples.len())
+        .collect();
+    let total = sizes.len() * config.layers.len() * config.neurons.len() * config.activations.len();
+    let bar = if progress {
+        ProgressBar::new(total as u64)
+    } else {
+        ProgressBar::hidden()
+    };
+    bar.set_style(
+        ProgressStyle::with_template(
+            "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} networks {msg}",
+        )
+        .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    let mut rows = Vec::new();
+    for &n in &sizes {
+        let subset = samples.subset(&(0..n).collect::<Vec<_>>());
+        let (tr, va, te) = split_samples(&subset, config.base.seed);
+        for &layers in &config.layers {
+            for &neurons in &config.neurons {
+                for &activation in &config.activations {
+                    bar.set_message(format!("{layers}x{neurons} {} n={n}", activation.name()));
+                    let options = TrainOptions {
+                        hidden: vec![neurons; layers],
+                        activation,
+                        ..config.base.clone()
+                    };
+                    let t = train(&tr, &va, &options);
+                    let m = t.evaluate(&te);
+                    rows.push(SweepRow {
+                        layers,
+                        neurons,
+                        activation,
+                        samples: n,
+                        parameters: t.net.parameter_count(),
+                        epochs: t.epochs,
+                        train_seconds: t.train_seconds,
+                        central: m.central,
+                        minimum: m.minimum,
+                    });
+                    bar.inc(1);
+                }
+            }
+        }
+    }
+    bar.finish_and_clear();
+    rows
+}
+
+/// Markdown table of the rows.
+pub fn markdown(rows: &[SweepRow]) -> String {
+    let mut s = String::from(
+        "| samples | layers × neurons | act | params | epochs | time s | h_c R² | h_c med % | h_c p99 % | h_c max % | h_min R² | h_min med % | h_min p99 % | h_min max % |\n\
+         |---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+    );
+    for r in rows {
+        s.push_str(&format!(
+            "| {} | {}×{} | {} | {} | {} | {:.1} | {:.6} | {:.3} | {:.3} | {:.3} | {:.6} | {:.3} | {:.3} | {:.3} |\n",
+            r.samples,
+            r.layers,
+            r.neurons,
+            r.activation.name(),
+            r.parameters,
+            r.epochs,
+            r.train_seconds,
+            r.central.r2,
+            r.central.median_pct,
+            r.central.p99_pct,
+            r.central.max_pct,
+            r.minimum.r2,
+            r.minimum.median_pct,
+            r.minimum.p99_pct,
+            r.minimum.max_pct
+        ));
+    }
+    s
+}

@@ -1,0 +1,28 @@
+//! `bearing export`: write a model file's network into the core as const arrays.
+
+use std::path::PathBuf;
+
+use anyhow::{Context, Result};
+use bearing_host::ann::export::render;
+use bearing_host::ann::model::ModelFile;
+use clap::Args;
+
+/// `bearing export --model FILE --out core/src/film/ann/model_weights.rs`
+#[derive(Args)]
+pub struct ExportArgs {
+    /// Model file (`bearing train`).
+    #[arg(long)]
+    model: PathBuf,
+    /// Generated Rust file.
+    #[arg(long, default_value = "core/src/film/ann/model_weights.rs")]
+    out: PathBuf,
+}
+
+/// Run `bearing export`.
+pub fn run(args: ExportArgs) -> Result<()> {
+    let model = ModelFile::load(&args.model)?;
+    let code = render(&model)?;
+    std::fs::write(&args.out, code).with_context(|| format!("writing {}", args.out.display()))?;
+    eprintln!("wrote {} from {}", args.out.display(), args.model.display());
+    Ok(())
+}

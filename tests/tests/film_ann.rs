@@ -1,0 +1,164 @@
+//! The film network across crates: the generated weights match the committed model file, the
+//! core's f32 and integer networks agree with the host's f64 network and integer mirror, the
+//! integer network stays within the bounds of the f32 one, and the pipeline model meets
+//! the accuracy targets on its held-out test set.
+//!
+//! The core holds the model trained on numerical EHL solutions (`data/ann/numerical_*`, Roelands +
+//! Dowson–Higginson, 801 nodes; 800 cases, 620 solved, 180 recorded failures). The
+//! pipeline model trained on the Moes stand-in (`data/ann/pipeline_moes_*`) is checked on the
+//! host against its closed-form reference.
+
+use std::path::PathBuf;
+
+use bearing_core::film::ann::{self, AnnF32, AnnInt};
+use bearing_core::film::{FilmModel, FilmSource};
+use bearing_host::ann::export::{fingerprint, render};
+use bearing_host::ann::metrics::Metrics;
+use bearing_host::ann::model::ModelFile;
+use bearing_host::ann::pipeline::{load_samples, predict_int, split_samples};
+use bearing_host::ann::train::Samples;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// The model compiled into the core, and its dataset.
+const CORE_MODEL: &str = "data/ann/numerical_model.json";
+const CORE_DATA: &str = "data/ann/numerical_dataset.jsonl";
+
+fn model() -> ModelFile {
+    ModelFile::load(&root().join(CORE_MODEL)).unwrap()
+}
+
+fn test_set_of(model: &ModelFile, data: &str) -> Samples {
+    let (_, samples) = load_samples(&root().join(data)).unwrap();
+    split_samples(&samples, model.trained.options.seed).2
+}
+
+fn test_set(model: &ModelFile) -> Samples {
+    test_set_of(model, CORE_DATA)
+}
+
+fn core_films<M: FilmModel>(m: &M, s: &Samples) -> Vec<(f64, f64)> {
+    s.cases
+        .iter()
+        .map(|c| {
+            let f = m.film(&c.to_core());
+            (f64::from(f.central_m), f64::from(f.minimum_m))
+        })
+        .collect()
+}
+
+/// Regenerating the weights from the committed model file gives the committed source, byte for
+/// byte, and the core was compiled from that model (fingerprint).
+#[test]
+fn generated_weights_match_the_model_file() {
+    let m = model();
+    let generated = render(&m).unwrap();
+    let committed =
+        std::fs::read_to_string(root().join("core/src/film/ann/model_weights.rs")).unwrap();
+    assert!(
+        generated == committed,
+        "core/src/film/ann/model_weights.rs is stale: run `bearing export --model {CORE_MODEL}`"
+    );
+    assert_eq!(
+        fingerprint(&m).unwrap(),
+        ann::model_weights::MODEL_FINGERPRINT
+    );
+}
+
+/// The core's f32 network (f32 features, fixed-cost ln/exp/tanh) against the host's f64
+/// network: the same weights, a different arithmetic; they must agree to 1e-4 relative.
+#[test]
+fn core_f32_agrees_with_host_f64() {
+    let m = model();
+    let te = test_set(&m);
+    let host: Vec<(f64, f64)> = te.cases.iter().map(|c| m.trained.predict(c)).collect();
+    let core = core_films(&AnnF32, &te);
+    let d = Metrics::of(&core, &host);
+    assert!(
+        d.central.max_pct < 1e-2 && d.minimum.max_pct < 1e-2,
+        "{d:?}"
+    );
+}
+
+/// The core's integer network against the host mirror (same integer kernels, f64 vs f32
+/// features), and against the core f32 network within the bounds: at most 0.2 %
+/// median and 1 % maximum added relative error.
+#[test]
+fn core_int_within_bounds_of_f32() {
+    let m = model();
+    let te = test_set(&m);
+    let q = m.quantised.as_ref().unwrap();
+    let mirror = predict_int(&m.trained, q, &te);
+    let int = core_films(&AnnInt, &te);
+    let f32s = core_films(&AnnF32, &te);
+    let vs_mirror = Metrics::of(&int, &mirror);
+    assert!(
+        vs_mirror.central.median_pct < 0.01 && vs_mirror.central.max_pct < 0.2,
+        "{vs_mirror:?}"
+    );
+    let added = Metrics::of(&int, &f32s);
+    for e in [added.central, added.minimum] {
+        assert!(e.median_pct <= 0.2 && e.max_pct <= 1.0, "{e:?}");
+    }
+}
+
+/// The accuracy targets on the held-out numerical test set (93 cases), core models:
+/// central film R² ≥ 0.9995, median ≤ 0.5 %, p99 ≤ 2 %, max ≤ 5 %; minimum film with twice
+/// the error bounds; every test case served by the network, not the fallback.
+#[test]
+fn numerical_model_meets_accuracy_targets() {
+    let m = model();
+    let te = test_set(&m);
+    for c in &te.cases {
+        assert_eq!(
+            AnnInt.film(&c.to_core()).source,
+            FilmSource::NetworkInt,
+            "{c:?} fell back"
+        );
+    }
+    for films in [core_films(&AnnF32, &te), core_films(&AnnInt, &te)] {
+        let e = Metrics::of(&films, &te.films);
+        assert!(
+            e.central.r2 >= 0.9995 && e.central.median_pct <= 0.5 && e.central.max_pct <= 5.0,
+            "{:?}",
+            e.central
+        );
+        assert!(
+            e.minimum.r2 >= 0.9995 && e.minimum.median_pct <= 1.0 && e.minimum.max_pct <= 10.0,
+            "{:?}",
+            e.minimum
+        );
+    }
+}
+
+/// The pipeline model (Moes stand-in), host f64 network and integer mirror, against its
+/// closed-form reference on its held-out test set: all of the targets (central film
+/// R² ≥ 0.9995, median ≤ 0.5 %, p99 ≤ 2 %, max ≤ 5 %; minimum film twice the error bounds).
+#[test]
+fn pipeline_model_meets_accuracy_targets() {
+    let m = ModelFile::load(&root().join("data/ann/pipeline_moes_model.json")).unwrap();
+    let te = test_set_of(&m, "data/ann/pipeline_moes_dataset.jsonl");
+    let f64s: Vec<(f64, f64)> = te.cases.iter().map(|c| m.trained.predict(c)).collect();
+    let ints = predict_int(&m.trained, m.quantised.as_ref().unwrap(), &te);
+    for films in [f64s, ints] {
+        let e = Metrics::of(&films, &te.films);
+        assert!(
+            e.central.r2 >= 0.9995
+                && e.central.median_pct <= 0.5
+                && e.central.p99_pct <= 2.0
+                && e.central.max_pct <= 5.0,
+            "{:?}",
+            e.central
+        );
+        assert!(
+            e.minimum.r2 >= 0.9995
+                && e.minimum.median_pct <= 1.0
+                && e.minimum.p99_pct <= 4.0
+                && e.minimum.max_pct <= 10.0,
+            "{:?}",
+            e.minimum
+        );
+    }
+}
