@@ -16,6 +16,7 @@
 
 use super::outputs::{StepOutputs, MAX_ROLLERS};
 use super::wire::Sample;
+use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::{
     Bearing, BearingGeometry, BearingOutput, BearingParams, ContactLaw, Crown, Lubricant, Material,
     OperatingState, Regression, StepStatus,
@@ -75,8 +76,6 @@ pub enum KernelError {
     UnknownLubricant,
     /// The sample rate is not finite and positive.
     BadSampleRate,
-    /// The film model is not available in the core yet.
-    FilmModelUnavailable(FilmKind),
     /// The core refused a parameter (a bug in the tables below).
     Parameter(bearing_core::ParamError),
 }
@@ -162,9 +161,6 @@ impl Kernel {
         sample_rate_hz: f64,
         film: FilmKind,
     ) -> Result<Kernel, KernelError> {
-        if matches!(film, FilmKind::Int | FilmKind::F32) {
-            return Err(KernelError::FilmModelUnavailable(film));
-        }
         if !(sample_rate_hz.is_finite() && sample_rate_hz > 0.0) {
             return Err(KernelError::BadSampleRate);
         }
@@ -211,18 +207,12 @@ impl Kernel {
     pub fn prime(&mut self, sample: &Sample) {
         let state = self.state(sample);
         for _ in 0..PRIME_STEPS {
-            match (&mut self.model, self.film) {
-                (Model::HubMotor(b), FilmKind::Dry) => {
-                    b.step_dry(&state);
+            match &mut self.model {
+                Model::HubMotor(b) => {
+                    run(b, self.film, &state);
                 }
-                (Model::HubMotor(b), _) => {
-                    b.step(&Regression, &state);
-                }
-                (Model::Nu205(b), FilmKind::Dry) => {
-                    b.step_dry(&state);
-                }
-                (Model::Nu205(b), _) => {
-                    b.step(&Regression, &state);
+                Model::Nu205(b) => {
+                    run(b, self.film, &state);
                 }
             }
         }
@@ -268,8 +258,9 @@ fn run<'a, const Z: usize>(
 ) -> &'a BearingOutput<Z> {
     match film {
         FilmKind::Dry => bearing.step_dry(state),
-        // `Kernel::new` refuses the networks until the core has them.
-        _ => bearing.step(&Regression, state),
+        FilmKind::Regression => bearing.step(&Regression, state),
+        FilmKind::F32 => bearing.step(&AnnF32, state),
+        FilmKind::Int => bearing.step(&AnnInt, state),
     }
 }
 

@@ -39,10 +39,6 @@ pub fn describe(error: &KernelError) -> String {
             "unknown lubricant identifier (known: thesis_oil)".to_string()
         }
         KernelError::BadSampleRate => "the sample rate is not finite and positive".to_string(),
-        KernelError::FilmModelUnavailable(kind) => format!(
-            "the film model '{}' is not in the core yet; use --film regression or --film dry",
-            kind.name()
-        ),
         KernelError::Parameter(e) => format!("the core refused a parameter: {e}"),
     }
 }

@@ -110,10 +110,6 @@ fn refuses_what_it_cannot_step() {
         new("nu205", "thesis_oil", f64::NAN, FilmKind::Dry),
         KernelError::BadSampleRate
     );
-    assert_eq!(
-        new("nu205", "thesis_oil", 1e4, FilmKind::Int),
-        KernelError::FilmModelUnavailable(FilmKind::Int)
-    );
     let mut kernel = Kernel::new("nu205", "thesis_oil", 1e4, FilmKind::Regression).unwrap();
     let mut out = StepOutputs::default();
     match kernel.step(&sample(f32::NAN, 0.0, 1.0), &mut out) {
@@ -171,4 +167,35 @@ fn two_replays_are_bit_identical() {
         a.iter().all(|o| o.force_n[1] > 0.0),
         "the orbit loads the bearing"
     );
+}
+
+#[test]
+fn steps_the_networks_and_flags_their_contacts() {
+    // The hub-motor bearing loaded downward at 12 000 rpm: the integer and f32 networks serve
+    // the loaded contacts (PHYSICS.md §5.3 domain) and give films within a few percent of each
+    // other; every contact is flagged by the network or its fallback.
+    let mut films = Vec::new();
+    for kind in [FilmKind::Int, FilmKind::F32] {
+        let mut kernel = Kernel::new("hub_motor", "thesis_oil", 1e4, kind).unwrap();
+        let s = sample(0.0, -6.0e-6, 1256.6);
+        kernel.prime(&s);
+        let mut out = StepOutputs::default();
+        kernel.step(&s, &mut out).unwrap();
+        let network = if kind == FilmKind::Int {
+            FilmSource::NetworkInt
+        } else {
+            FilmSource::NetworkF32
+        };
+        assert!(
+            out.source_inner[..17].contains(&network),
+            "{kind:?}: no contact served by the network"
+        );
+        assert!(out.source_inner[..17]
+            .iter()
+            .all(|&s| s == network || s == FilmSource::Fallback));
+        films.push(out.film_inner_m[..17].to_vec());
+    }
+    for (a, b) in films[0].iter().zip(films[1].iter()) {
+        assert!((a / b - 1.0).abs() < 0.02, "int {a} vs f32 {b}");
+    }
 }

@@ -26,7 +26,7 @@ mod regression;
 #[allow(clippy::excessive_precision, clippy::unreadable_literal)]
 pub mod model_weights;
 
-use super::{ContactInput, Film, FilmModel, FilmSource};
+use super::{ContactInput, Film, FilmModel, FilmSource, ServedLoads};
 use model_weights as model;
 
 /// The network's input set (`bearing_host::ann::features`).
@@ -176,6 +176,76 @@ pub fn finish(p: &Prepared, y: [f32; 2], source: FilmSource) -> Film {
     }
 }
 
+/// The loads at which the network serves contacts like `c` (its load ignored): every test of
+/// the guard in [`prepare`] is a bound on ln Q once the other inputs are fixed — the load box,
+/// the Hertz window (2 ln p_h rises with ln Q) and the three regime inequalities (each linear in
+/// ln M = ln Q − ln(l E' R) − ½ ln 2U). An empty interval when another input is outside its box.
+pub fn served_loads(c: &ContactInput, source: FilmSource) -> ServedLoads {
+    let others = [
+        c.entrainment_speed_m_s,
+        c.reduced_radius_m,
+        c.reduced_modulus_pa,
+        c.pressure_viscosity_pa_inv,
+        c.viscosity_pa_s,
+        c.length_m,
+    ];
+    let mut inside = true;
+    for (v, [lo, hi]) in others.iter().zip(model::DOMAIN.inputs.iter().skip(1)) {
+        inside &= (*v > 0.0) & (*v <= f32::MAX) & (*v >= *lo) & (*v <= *hi);
+    }
+    let [ln_u_m, ln_r, ln_e, ln_alpha, ln_eta, ln_l] = others.map(fastmath::ln);
+    let ln_u = ln_eta + ln_u_m - ln_e - ln_r;
+    let ln_g = ln_alpha + ln_e;
+    let ln_l_moes = ln_g + 0.25 * (LN_2 + ln_u);
+    // ln Q = ln M + ln(l E' R) + ½(ln 2 + ln U).
+    let ln_q_of_m = ln_l + ln_e + ln_r + 0.5 * (LN_2 + ln_u);
+    let [q_min, q_max] = model::DOMAIN.inputs.first().copied().unwrap_or([1.0, 0.0]);
+    let [ln_pmin, ln_pmax] = model::DOMAIN.ln_hertz_pressure;
+    // 2 ln p_h = ln Q − ln l + ln E' − ln 2π − ln R.
+    let hertz_offset = ln_l - ln_e + LN_2PI + ln_r;
+    let piezo = model::DOMAIN.piezo_min_log_ratio;
+    let elastic = model::DOMAIN.elastic_max_log_ratio;
+    // ln H_EP − ln H_RI = c₁ + 0.875 ln M ≥ piezo; ln H_EP − ln H_EI = c₂ + 0.075 ln M ≥ piezo;
+    // ln H_EP − ln H_RP = c₃ − 0.125 ln M ≤ elastic.
+    let c1 = LN_1_311 + 0.75 * ln_l_moes - LN_3;
+    let c2 = LN_1_311 + 0.75 * ln_l_moes - LN_2_621;
+    let c3 = LN_1_311 - LN_1_287 + (0.75 - 2.0 / 3.0) * ln_l_moes;
+    let ln_m_min = fastmath_max(
+        fastmath_max((piezo - c1) / 0.875, (piezo - c2) / 0.075),
+        (c3 - elastic) / 0.125,
+    );
+    let lo = fastmath_max(
+        fastmath_max(fastmath::ln(q_min), 2.0 * ln_pmin + hertz_offset),
+        ln_m_min + ln_q_of_m,
+    );
+    let hi = fastmath_min(fastmath::ln(q_max), 2.0 * ln_pmax + hertz_offset);
+    ServedLoads {
+        ln_load_min: if inside { lo } else { f32::MAX },
+        ln_load_max: if inside { hi } else { f32::MIN },
+        source,
+    }
+}
+
+/// The larger of two finite values (a compare and a select).
+#[inline(always)]
+fn fastmath_max(a: f32, b: f32) -> f32 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
+/// The smaller of two finite values.
+#[inline(always)]
+fn fastmath_min(a: f32, b: f32) -> f32 {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
 /// The f32 network.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct AnnF32;
@@ -210,6 +280,10 @@ impl FilmModel for AnnF32 {
         let p = prepare(contact);
         finish(&p, Self::network(&p.features), FilmSource::NetworkF32)
     }
+
+    fn served_loads(&self, template: &ContactInput) -> ServedLoads {
+        served_loads(template, FilmSource::NetworkF32)
+    }
 }
 
 impl FilmModel for AnnInt {
@@ -220,5 +294,49 @@ impl FilmModel for AnnInt {
     fn film(&self, contact: &ContactInput) -> Film {
         let p = prepare(contact);
         finish(&p, Self::network(&p.features), FilmSource::NetworkInt)
+    }
+
+    fn served_loads(&self, template: &ContactInput) -> ServedLoads {
+        served_loads(template, FilmSource::NetworkInt)
+    }
+}
+
+#[cfg(test)]
+mod served_tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        /// The served interval and the guard agree on every load (away from the interval's
+        /// edges, where f32 rounding of the two formulations may differ).
+        #[test]
+        fn served_interval_matches_the_guard(
+            ln_q in 3.0f32..9.5, u in 0.5f32..32.0, r_mm in 0.08f32..22.0, e_gpa in 195.0f32..255.0,
+            alpha in 9.0f32..31.0, ln_eta in -7.7f32..-2.2, l_mm in 0.9f32..52.0,
+        ) {
+            let c = ContactInput {
+                load_n: libm::expf(ln_q),
+                length_m: l_mm * 1e-3,
+                entrainment_speed_m_s: u,
+                reduced_radius_m: r_mm * 1e-3,
+                reduced_modulus_pa: e_gpa * 1e9,
+                pressure_viscosity_pa_inv: alpha * 1e-9,
+                viscosity_pa_s: libm::expf(ln_eta),
+            };
+            let served = served_loads(&c, FilmSource::NetworkInt);
+            let ln_load = fastmath::ln(c.load_n);
+            let margin = 1.0e-3;
+            let clearly_in = ln_load > served.ln_load_min + margin && ln_load < served.ln_load_max - margin;
+            let clearly_out = ln_load < served.ln_load_min - margin || ln_load > served.ln_load_max + margin;
+            let guard = prepare(&c).in_domain;
+            if clearly_in {
+                prop_assert!(guard, "{c:?} inside [{}, {}] but refused", served.ln_load_min, served.ln_load_max);
+            }
+            if clearly_out {
+                prop_assert!(!guard, "{c:?} outside [{}, {}] but served", served.ln_load_min, served.ln_load_max);
+            }
+        }
     }
 }
