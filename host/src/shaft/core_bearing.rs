@@ -7,6 +7,7 @@
 //! `Bearing::step`, monomorphised. No per-call allocation: the outputs are summarised in place.
 
 use bearing_core::bearing::BearingOutput;
+use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::{Bearing, BearingParams, OperatingState, ParamError, Regression, StepStatus};
 
 use super::bearing::{FilmChoice, RollerDiagnostics, RollerState};
@@ -27,7 +28,7 @@ pub struct CoreStep {
 
 /// A core bearing of any supported roller count.
 pub trait CoreBearing: Send {
-    /// One step with the regression film (`FilmChoice::Regression`) or dry (`FilmChoice::Dry`);
+    /// One step with the chosen film model (networks, regression) or dry;
     /// the core's refusal of the state is returned as its error.
     fn step(&mut self, film: FilmChoice, state: &OperatingState) -> Result<CoreStep, ParamError>;
     /// Per-roller states of the last step.
@@ -62,7 +63,9 @@ impl<const Z: usize> CoreBearing for Bearing<Z, SLICES> {
     fn step(&mut self, film: FilmChoice, state: &OperatingState) -> Result<CoreStep, ParamError> {
         match film {
             FilmChoice::Dry => summarise(Bearing::step_dry(self, state)),
-            _ => summarise(Bearing::step(self, &Regression, state)),
+            FilmChoice::Regression => summarise(Bearing::step(self, &Regression, state)),
+            FilmChoice::F32 => summarise(Bearing::step(self, &AnnF32, state)),
+            FilmChoice::Int => summarise(Bearing::step(self, &AnnInt, state)),
         }
     }
 

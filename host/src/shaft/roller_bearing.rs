@@ -33,19 +33,9 @@ pub struct RollerBearing {
 }
 
 impl RollerBearing {
-    /// From a bearing configuration file (see `crate::config`) and a film model. The integer
-    /// and f32 networks are refused until the core provides them.
+    /// From a bearing configuration file (see `crate::config`) and a film model (integer or f32
+    /// network, regression formulas, or dry).
     pub fn from_file(path: &Path, film: FilmChoice) -> Result<Self, BearingError> {
-        match film {
-            FilmChoice::Regression | FilmChoice::Dry => {}
-            FilmChoice::Int | FilmChoice::F32 => {
-                return Err(BearingError(format!(
-                    "film {:?} for {}: the core has no film network yet; use film = \"regression\" or \"dry\"",
-                    film,
-                    path.display()
-                )))
-            }
-        }
         let (_, params) = BearingConfig::load(path).map_err(|e| BearingError(e.to_string()))?;
         let geometry = *params.geometry();
         let bearing = new_core_bearing(params)
