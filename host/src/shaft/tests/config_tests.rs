@@ -157,7 +157,7 @@ fn roller_bearing_films() {
         spin_speed: 12_000.0 * std::f64::consts::PI / 30.0,
         time: 0.0,
     };
-    let mut force = |film| {
+    let force = |film| {
         let mut b = roller_bearing(&path, film).unwrap();
         let mut f = [0.0; 2];
         for _ in 0..8 {
