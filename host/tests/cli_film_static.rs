@@ -192,3 +192,51 @@ fn static_reports_bad_files_with_file_line_and_field() {
     assert!(!ok);
     assert!(err.contains("-5"), "{err}");
 }
+
+#[test]
+fn film_lists_the_numerical_solution_and_the_networks_with_their_fallback() {
+    // In the network's domain (1.5 kN, 10 m/s): every model answers and carries its error
+    // against the numerical solution; at 100 N the contact leaves the domain (Hertz pressure
+    // below 0.3 GPa, PHYSICS.md §5.3) and both networks report the regression fallback.
+    let mut args = vec!["film", "--json"];
+    args.extend(CONTACT);
+    let (ok, out, err) = bearing(&args);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let models = v["models"].as_array().unwrap();
+    let by = |name: &str| {
+        models
+            .iter()
+            .find(|m| m["name"] == name)
+            .unwrap_or_else(|| panic!("no {name}"))
+            .clone()
+    };
+    let numerical = by("numerical");
+    assert!(
+        numerical["central_film_m"].as_f64().unwrap() > 0.0,
+        "{numerical}"
+    );
+    for name in ["ann_f32", "ann_int"] {
+        let m = by(name);
+        assert_eq!(m["fell_back"], false, "{m}");
+        assert!(m["central_rel_err_vs_numerical"]
+            .as_f64()
+            .unwrap()
+            .is_finite());
+    }
+    let mut light = args.clone();
+    light[3] = "100";
+    let (ok, out, err) = bearing(&light);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    for name in ["ann_f32", "ann_int"] {
+        let m = v["models"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["name"] == name)
+            .unwrap()
+            .clone();
+        assert_eq!(m["fell_back"], true, "{m}");
+    }
+}

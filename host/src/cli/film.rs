@@ -1,12 +1,15 @@
 //! `bearing film`: film thickness and Hertz figures of one line contact, every film model side
-//! by side.
+//! by side — the numerical solution, the f32 and integer networks (flagged when they fall back),
+//! the regression formulas, Moes and Martin — with each model's error against the numerical one.
 
 use std::path::PathBuf;
 
 use anyhow::{bail, Context};
 use bearing_core::contact::HertzLineContact;
+use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::film::{moes_central, Hydrodynamic, LnGroups};
-use bearing_core::{ContactInput, FilmModel, Regime, Regression};
+use bearing_core::{ContactInput, FilmModel, FilmSource, Regime, Regression};
+use bearing_host::ehl::{self, ContactCase, SolverOptions};
 use clap::Args;
 use serde_json::json;
 
@@ -67,9 +70,36 @@ fn report(contact: &ContactInput) -> serde_json::Value {
     let (m, l) = (g.ln_m().exp(), g.ln_l().exp());
     // Moes: H_c = (h_c/R)(2U)^−1/2.
     let moes_m = moes_central(m, l) * (2.0 * g.ln_u.exp()).sqrt() * contact.reduced_radius_m;
-    let entry = |name: &str, central: f32, minimum: Option<f32>| json!({"name": name, "central_film_m": central, "min_film_m": minimum, "regime": regime.name(), "fell_back": false});
+    // The numerical solution (PHYSICS.md §5.2, default options) is the reference of the others.
+    let numerical = ContactCase::new(
+        f64::from(contact.load_per_length_n_per_m()),
+        f64::from(contact.entrainment_speed_m_s),
+        f64::from(contact.reduced_radius_m),
+        f64::from(contact.reduced_modulus_pa),
+        f64::from(contact.pressure_viscosity_pa_inv),
+        f64::from(contact.viscosity_pa_s),
+    )
+    .and_then(|case| ehl::solve(&case, &SolverOptions::default()));
+    let reference = numerical.as_ref().ok().map(|n| n.central_film_m);
+    let entry = |name: &str, central: f32, minimum: Option<f32>, fell_back: bool| {
+        let error = reference.map(|r| (f64::from(central) - r) / r);
+        json!({"name": name, "central_film_m": central, "min_film_m": minimum, "regime": regime.name(),
+               "fell_back": fell_back, "central_rel_err_vs_numerical": error})
+    };
     let regression = Regression.film(contact);
     let hydro = Hydrodynamic.film(contact);
+    let ann_f32 = AnnF32.film(contact);
+    let ann_int = AnnInt.film(contact);
+    let numerical_entry = match &numerical {
+        Ok(n) => {
+            json!({"name": "numerical", "central_film_m": n.central_film_m, "min_film_m": n.min_film_m,
+                        "regime": regime.name(), "fell_back": false, "central_rel_err_vs_numerical": 0.0})
+        }
+        Err(e) => {
+            json!({"name": "numerical", "central_film_m": null, "min_film_m": null, "regime": regime.name(),
+                         "fell_back": false, "error": e.to_string()})
+        }
+    };
     json!({
         "input": {
             "load_n": contact.load_n, "length_m": contact.length_m,
@@ -81,9 +111,12 @@ fn report(contact: &ContactInput) -> serde_json::Value {
         "regime": regime.name(),
         "hertz": {"half_width_m": hertz.half_width_m, "max_pressure_pa": hertz.max_pressure_pa},
         "models": [
-            entry("regression", regression.central_m, Some(regression.minimum_m)),
-            entry("moes", moes_m, None),
-            entry("hydrodynamic", hydro.central_m, Some(hydro.minimum_m)),
+            numerical_entry,
+            entry("ann_f32", ann_f32.central_m, Some(ann_f32.minimum_m), ann_f32.source == FilmSource::Fallback),
+            entry("ann_int", ann_int.central_m, Some(ann_int.minimum_m), ann_int.source == FilmSource::Fallback),
+            entry("regression", regression.central_m, Some(regression.minimum_m), false),
+            entry("moes", moes_m, None, false),
+            entry("hydrodynamic", hydro.central_m, Some(hydro.minimum_m), false),
         ],
     })
 }
@@ -107,18 +140,29 @@ fn print_human(title: &str, r: &serde_json::Value) {
         f(&r["hertz"]["max_pressure_pa"]) * 1e-9
     );
     println!(
-        "  {:<14} {:>14} {:>14}",
-        "model", "central (nm)", "minimum (nm)"
+        "  {:<14} {:>14} {:>14} {:>14}",
+        "model", "central (nm)", "minimum (nm)", "vs numerical"
     );
     for m in r["models"].as_array().into_iter().flatten() {
         let min = m["min_film_m"]
             .as_f64()
             .map_or("–".to_string(), |v| format!("{:.1}", v * 1e9));
+        let err = m["central_rel_err_vs_numerical"]
+            .as_f64()
+            .map_or("–".to_string(), |v| format!("{:+.2} %", v * 100.0));
+        let note = if m["fell_back"].as_bool() == Some(true) {
+            "  (outside the network's domain: regression fallback)".to_string()
+        } else if let Some(e) = m["error"].as_str() {
+            format!("  ({e})")
+        } else {
+            String::new()
+        };
         println!(
-            "  {:<14} {:>14.1} {:>14}",
+            "  {:<14} {:>14.1} {:>14} {:>14}{note}",
             m["name"].as_str().unwrap_or("?"),
             f(&m["central_film_m"]) * 1e9,
-            min
+            min,
+            err
         );
     }
 }
