@@ -6,7 +6,6 @@ use super::*;
 use crate::film::{FilmSource, Regression};
 use crate::params::Crown;
 use proptest::prelude::*;
-use std::vec::Vec;
 
 const RPM: f32 = core::f32::consts::PI / 30.0;
 
@@ -254,7 +253,7 @@ proptest! {
     /// Random bit patterns as the operating state never panic and never give NaN forces.
     #[test]
     fn hostile_operating_states_never_give_nan(bits in proptest::collection::vec(any::<u32>(), 8)) {
-        let f: Vec<f32> = bits.iter().map(|&b| f32::from_bits(b)).collect();
+        let f: std::vec::Vec<f32> = bits.iter().map(|&b| f32::from_bits(b)).collect();
         let s = OperatingState {
             displacement_m: [f[0], f[1]],
             velocity_m_s: [f[2], f[3]],
