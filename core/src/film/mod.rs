@@ -111,6 +111,15 @@ pub struct ServedLoads {
 }
 
 impl ServedLoads {
+    /// Every load served, reported as `source` (a formula that holds everywhere).
+    pub const fn everywhere(source: FilmSource) -> Self {
+        Self {
+            ln_load_min: f32::MIN,
+            ln_load_max: f32::MAX,
+            source,
+        }
+    }
+
     /// The source of a contact at ln Q: the model's own inside the interval,
     /// [`FilmSource::Fallback`] outside. Two comparisons, no branch.
     #[inline]

@@ -56,11 +56,7 @@ impl FilmModel for Regression {
 
     fn served_loads(&self, _template: &ContactInput) -> ServedLoads {
         // The formula serves every load; `film` returns zero for an invalid contact.
-        ServedLoads {
-            ln_load_min: f32::MIN,
-            ln_load_max: f32::MAX,
-            source: FilmSource::Regression,
-        }
+        ServedLoads::everywhere(FilmSource::Regression)
     }
 
     fn film(&self, contact: &ContactInput) -> Film {
