@@ -4,14 +4,14 @@
 //! the full model at this speed: 0.4 % displacement, 2 % acceleration, from `bearing shaft run
 //! --reduce 16 --compare-full`), with
 //! * linear bearings 3·10⁸ N/m, 300 N·s/m (the linear algebra alone), and
-//! * the core's roller bearings (configs/hub_motor.toml, regression film; the core has no
-//!   film network yet), whose evaluation is also timed on its own (`roller_bearing_evaluate`).
+//! * the core's roller bearings (configs/hub_motor.toml) with the regression film and with the
+//!   integer film network, whose evaluation is also timed on its own (`roller_bearing_evaluate`).
 //!
 //! Real-time factor = step size / time per step; the setup prints the DOF counts.
 
 use std::path::Path;
 
-use bearing_host::shaft::bearing::{BearingSpec, BearingState, LinearBearing};
+use bearing_host::shaft::bearing::{BearingSpec, BearingState, FilmChoice, LinearBearing};
 use bearing_host::shaft::config::load_model;
 use bearing_host::shaft::integrator::{NewtonSettings, Scheme};
 use bearing_host::shaft::operating::build_bearings;
@@ -27,10 +27,20 @@ fn shaft_step(c: &mut Criterion) {
     for b in &mut linear.description.bearings {
         b.spec = BearingSpec::Linear(LinearBearing::isotropic(3e8, 300.0));
     }
+    let mut roller_int = roller.clone();
+    for b in &mut roller_int.description.bearings {
+        if let BearingSpec::Roller { film, .. } = &mut b.spec {
+            *film = FilmChoice::Int;
+        }
+    }
     let omega = 21_000.0 * std::f64::consts::PI / 30.0;
     let dt = 2.0 * std::f64::consts::PI / (20.0 * 17.0 * omega);
     let mut group = c.benchmark_group("shaft_step");
-    for (label, model) in [("linear", &linear), ("roller_regression", &roller)] {
+    for (label, model) in [
+        ("linear", &linear),
+        ("roller_regression", &roller),
+        ("roller_int", &roller_int),
+    ] {
         let eq = equilibrium(model, omega, &mut build_bearings(model).unwrap()).unwrap();
         for reduction in [None, Some(16)] {
             let system = TimeSystem::new(model, reduction).unwrap();
