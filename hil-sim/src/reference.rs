@@ -18,7 +18,7 @@ use crate::kernel;
 use crate::outputs::StepOutputs;
 use crate::replay::{AccuracyReference, ReferenceOutputs, StepFault};
 use crate::trace::{Sample, TraceMeta};
-use bearing_core::contact::PALMGREN_K;
+use bearing_core::contact::{HertzLineContact, PALMGREN_K};
 use bearing_core::{BearingParams, ContactLaw, Crown};
 use bearing_host::ehl::{ContactCase, EhlSolution, Solver, SolverOptions};
 
@@ -152,10 +152,12 @@ impl NumericalReference {
     /// Hertz pressure of the inner contact at load `load_n` (Pa), the more loaded one.
     fn hertz_pressure(&self, load_n: f64, speed_rad_s: f32) -> f64 {
         let c = self.params.contact_input(false, load_n as f32, speed_rad_s);
-        let w = load_n / f64::from(c.length_m);
-        (w * f64::from(c.reduced_modulus_pa)
-            / (2.0 * std::f64::consts::PI * f64::from(c.reduced_radius_m)))
-        .sqrt()
+        let hertz = HertzLineContact::new(
+            c.load_per_length_n_per_m(),
+            c.reduced_radius_m,
+            c.reduced_modulus_pa,
+        );
+        f64::from(hertz.max_pressure_pa)
     }
 }
 
@@ -209,7 +211,7 @@ impl AccuracyReference for NumericalReference {
                 };
                 let (mut a, mut b) = (core_load.ln() - 0.5, core_load.ln() + 0.5);
                 let (mut fa, mut films) = residual(a.exp(), self).map_err(fault)?;
-                let (mut fb, films_b) = residual(b.exp(), self).map_err(fault)?;
+                let (mut fb, _) = residual(b.exp(), self).map_err(fault)?;
                 let mut widen = 0;
                 while fa > 0.0 && widen < 20 {
                     a -= 1.0;
@@ -226,7 +228,6 @@ impl AccuracyReference for NumericalReference {
                         "roller {j}: no bracket for the film–load coupling"
                     )));
                 }
-                let _ = films_b;
                 let mut q = core_load;
                 let mut converged = false;
                 let mut side = 0i8;

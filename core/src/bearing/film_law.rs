@@ -64,8 +64,6 @@ impl LogParabola {
 pub(crate) struct StepFilmLaw {
     /// ln of the EHL central film of the inner and outer contact.
     pub central: [LogParabola; 2],
-    /// ln of the EHL minimum film of the inner and outer contact.
-    pub minimum: [LogParabola; 2],
     /// ln of the sum of both EHL central films (what the coupling needs).
     pub central_sum: LogParabola,
     /// Martin coefficients B with h_RI = B/Q, per contact (m·N).
@@ -133,16 +131,13 @@ impl StepFilmLaw {
                 ],
             )
         };
+        let central = central.map(log3);
+        let [mi, mo] = minimum.map(log3);
         let [ci, co] = central;
-        let [mi, mo] = minimum;
         Self {
-            central: [log3(ci), log3(co)],
-            minimum: [log3(mi), log3(mo)],
+            central,
             central_sum: log3(sum),
-            min_ratio: [
-                min_ratio(&log3(ci), &log3(mi)),
-                min_ratio(&log3(co), &log3(mo)),
-            ],
+            min_ratio: [min_ratio(&ci, &mi), min_ratio(&co, &mo)],
             martin,
             martin_sum: martin[0] + martin[1],
         }

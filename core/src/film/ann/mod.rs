@@ -210,39 +210,19 @@ pub fn served_loads(c: &ContactInput, source: FilmSource) -> ServedLoads {
     let c1 = LN_1_311 + 0.75 * ln_l_moes - LN_3;
     let c2 = LN_1_311 + 0.75 * ln_l_moes - LN_2_621;
     let c3 = LN_1_311 - LN_1_287 + (0.75 - 2.0 / 3.0) * ln_l_moes;
-    let ln_m_min = fastmath_max(
-        fastmath_max((piezo - c1) / 0.875, (piezo - c2) / 0.075),
+    let ln_m_min = crate::math::max(
+        crate::math::max((piezo - c1) / 0.875, (piezo - c2) / 0.075),
         (c3 - elastic) / 0.125,
     );
-    let lo = fastmath_max(
-        fastmath_max(fastmath::ln(q_min), 2.0 * ln_pmin + hertz_offset),
+    let lo = crate::math::max(
+        crate::math::max(fastmath::ln(q_min), 2.0 * ln_pmin + hertz_offset),
         ln_m_min + ln_q_of_m,
     );
-    let hi = fastmath_min(fastmath::ln(q_max), 2.0 * ln_pmax + hertz_offset);
+    let hi = crate::math::min(fastmath::ln(q_max), 2.0 * ln_pmax + hertz_offset);
     ServedLoads {
         ln_load_min: if inside { lo } else { f32::MAX },
         ln_load_max: if inside { hi } else { f32::MIN },
         source,
-    }
-}
-
-/// The larger of two finite values (a compare and a select).
-#[inline(always)]
-fn fastmath_max(a: f32, b: f32) -> f32 {
-    if a > b {
-        a
-    } else {
-        b
-    }
-}
-
-/// The smaller of two finite values.
-#[inline(always)]
-fn fastmath_min(a: f32, b: f32) -> f32 {
-    if a < b {
-        a
-    } else {
-        b
     }
 }
 
