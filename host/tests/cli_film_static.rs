@@ -48,7 +48,8 @@ fn film_json_matches_the_closed_forms() {
     let (ok, out, err) = bearing(&args);
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
-    // Hertz (PHYSICS.md §1) and Dowson–Toyoda (§5.1) computed here in f64.
+    // Hertz (PHYSICS.md §1) and Dowson–Toyoda (§5.1) blended root-sum-square with Martin's
+    // h_c/R = 6U/W (the regression model's complete film), computed here in f64.
     let (q, l, u, r, e, a, eta) = (1500.0f64, 0.015, 10.0, 0.0035, 2.3077e11, 2.1e-8, 0.08);
     let w = q / l;
     let b = (8.0 * w * r / (std::f64::consts::PI * e)).sqrt();
@@ -61,8 +62,10 @@ fn film_json_matches_the_closed_forms() {
         .iter()
         .find(|m| m["name"] == "regression")
         .expect("regression entry");
-    let hc =
+    let dt =
         3.06 * r * (a * e).powf(0.56) * (eta * u / (e * r)).powf(0.69) * (w / (e * r)).powf(-0.10);
+    let martin = 6.0 * r * (eta * u / (e * r)) / (w / (e * r));
+    let hc = dt.hypot(martin);
     assert!(
         rel(&regression["central_film_m"], hc) < 1e-4,
         "{regression}"

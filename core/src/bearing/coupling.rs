@@ -4,12 +4,12 @@
 //! and Q_j = Q(δ_j) from the slices. H falls with Q (EHL: ∝ Q^−0.1; hydrodynamic: ∝ 1/Q), so
 //! the equation has exactly one root for any geometric approach, positive or negative.
 //!
-//! **Continuity at separation.** The film sum is the root-sum-square of the EHL films and
-//! Martin's rigid iso-viscous film, H = √(H_EHL² + H_RI²), H_RI = 6η₀u_m(R_in + R_out)l/Q. At
-//! high load H_RI vanishes and the EHL model rules; as the rollers separate, Q → 0 and Martin's
-//! hydrodynamic load takes over smoothly (a C¹ blend, Moes-style; at the crossover it is √2
-//! above either asymptote, where Moes' 7/3 blend gives 2^(3/7) ≈ 1.35). Roller forces are
-//! therefore continuous — and differentiable — in the displacement across the transition.
+//! **Continuity at separation.** The film sum is written H = √(H_e² + H_RI²), with Martin's
+//! rigid iso-viscous film H_RI = 6η₀u_m(R_in + R_out)l/Q exact and H_e the rest of the film
+//! model's (complete) film, interpolated over the step's film nodes (`film_law`). At high load
+//! H_RI vanishes and the film model rules; as the rollers separate, Q → 0 and Martin's
+//! hydrodynamic load takes over smoothly. Roller forces are therefore continuous — and
+//! differentiable — in the displacement across the transition.
 //!
 //! **Fixed work.** One pass over the slices per roller and step. Each roller remembers the
 //! whole-roller power law Q = L·(δ − δ_off)^n fitted to its slices at the previous step

@@ -6,8 +6,15 @@
 //! The model is called at three loads spanning the previous step's loaded rollers, and
 //! ln h(ln Q) is interpolated by the parabola through them — exact for the power-law regression
 //! formulas, and for a smooth network within a fraction of its own error — extended linearly
-//! (C¹) beyond the outer nodes. Each contact's film is then blended with Martin's hydrodynamic
-//! film, as the coupling requires (see `coupling`).
+//! (C¹) beyond the outer nodes.
+//!
+//! **Light loads.** A film model returns the complete film, which rises like Martin's
+//! hydrodynamic film h_RI = B/Q as the load vanishes (`FilmModel`). A parabola in ln Q cannot
+//! follow that rise below the lightest node, so the film is split at each node into Martin's
+//! part and the rest, in quadrature: e = √(h² − h_RI²) is interpolated, and the film at any load
+//! is √(e(λ)² + h_RI(λ)²) with h_RI exact. At the nodes this returns the model's film
+//! exactly; beyond them the slowly varying part e is extrapolated and the hydrodynamic part
+//! keeps its exact 1/Q growth, so a separating roller keeps a continuous load (see `coupling`).
 
 use crate::film::{ContactInput, FilmModel, MARTIN_CENTRAL, MARTIN_MINIMUM};
 use crate::math::{exp, ln, max, min, select, sqrt};
@@ -22,6 +29,10 @@ const LN_NODE_MIN: f32 = 0.0;
 const LN_NODE_MAX: f32 = 11.512_925;
 /// Floor of a film before its logarithm is taken (m).
 const FILM_FLOOR_M: f32 = 1.0e-15;
+/// Floor of the non-hydrodynamic part e = √(h² − h_RI²) relative to h: a model film at or below
+/// Martin's (a purely hydrodynamic model) leaves e at this fraction, and the blend then returns
+/// Martin's film within 10⁻⁶.
+const EHL_PART_FLOOR: f32 = 1.0e-3;
 
 /// ln h as a function of λ = ln Q: the parabola through three equally spaced nodes, continued
 /// by its tangent beyond the outer ones.
@@ -62,15 +73,17 @@ impl LogParabola {
 /// The films of both contact kinds for one step.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct StepFilmLaw {
-    /// ln of the EHL central film of the inner and outer contact.
+    /// ln of the non-hydrodynamic part e of the central film of the inner and outer contact.
     pub central: [LogParabola; 2],
-    /// ln of the sum of both EHL central films (what the coupling needs).
+    /// ln of the non-hydrodynamic part of the sum of both central films (what the coupling
+    /// needs).
     pub central_sum: LogParabola,
     /// Martin coefficients B with h_RI = B/Q, per contact (m·N).
     pub martin: [f32; 2],
     /// Their sum (m·N).
     pub martin_sum: f32,
-    /// Minimum-to-central EHL film ratio per contact at the node centre, and its slope in λ.
+    /// Ratio of the non-hydrodynamic parts of the minimum and the central film per contact at
+    /// the node centre, and its slope in λ.
     pub min_ratio: [(f32, f32); 2],
 }
 
@@ -100,24 +113,30 @@ impl StepFilmLaw {
         let mut central = [[0.0f32; FILM_NODES]; 2];
         let mut minimum = [[0.0f32; FILM_NODES]; 2];
         let mut sum = [0.0f32; FILM_NODES];
+        let martin_sum = martin[0] + martin[1];
         for (k, s) in sum.iter_mut().enumerate() {
             let ln_load = centre + (k as f32 - 1.0) * half_span;
             let load_n = exp(ln_load);
-            for ((template, c), m) in contacts
+            let inv_load = exp(-ln_load);
+            let mut total = 0.0;
+            for (((template, c), m), &b) in contacts
                 .iter()
                 .zip(central.iter_mut())
                 .zip(minimum.iter_mut())
+                .zip(martin.iter())
             {
                 let film = model.film(&ContactInput {
                     load_n,
                     ..*template
                 });
+                let hydro = b * inv_load;
                 if let (Some(cv), Some(mv)) = (c.get_mut(k), m.get_mut(k)) {
-                    *cv = film.central_m;
-                    *mv = film.minimum_m;
+                    *cv = ehl_part(film.central_m, hydro);
+                    *mv = ehl_part(film.minimum_m, hydro * (MARTIN_MINIMUM / MARTIN_CENTRAL));
                 }
-                *s += film.central_m;
+                total += film.central_m;
             }
+            *s = ehl_part(total, martin_sum * inv_load);
         }
         let log3 = |v: [f32; FILM_NODES]| {
             let [a, b, c] = v;
@@ -139,7 +158,7 @@ impl StepFilmLaw {
             central_sum: log3(sum),
             min_ratio: [min_ratio(&ci, &mi), min_ratio(&co, &mo)],
             martin,
-            martin_sum: martin[0] + martin[1],
+            martin_sum,
         }
     }
 
@@ -191,6 +210,13 @@ impl StepFilmLaw {
         }
         out
     }
+}
+
+/// The part of a film `h` left after removing the hydrodynamic film `hydro` in quadrature,
+/// √(h² − hydro²), floored at [`EHL_PART_FLOOR`]·h.
+fn ehl_part(h: f32, hydro: f32) -> f32 {
+    let floor = EHL_PART_FLOOR * h;
+    sqrt(max(h * h - hydro * hydro, floor * floor))
 }
 
 /// (ratio, d ln ratio/dλ) of the minimum to the central film at the centre of the nodes.

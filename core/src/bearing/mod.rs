@@ -246,11 +246,20 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             standstill(film.served_loads(&templates[0])),
             standstill(film.served_loads(&templates[1])),
         ];
+        // The film nodes span last step's loaded rollers, but only where the model serves both
+        // contacts: a node outside its domain would bend the interpolation of the served
+        // contacts towards the fallback formula. Lighter rollers take the extrapolation, whose
+        // hydrodynamic part is exact (`film_law`).
+        let served_lo = crate::math::max(served[0].ln_load_min, served[1].ln_load_min);
+        let served_hi = crate::math::min(served[0].ln_load_max, served[1].ln_load_max);
+        let (span_lo, span_hi) = self.load_span;
+        let node_lo = crate::math::min(crate::math::max(span_lo, served_lo), span_hi);
+        let node_hi = crate::math::max(crate::math::min(span_hi, served_hi), node_lo);
         let films = StepFilmLaw::new(
             film,
             templates,
             [inner.martin, outer.martin],
-            self.load_span,
+            (node_lo, node_hi),
         );
         let ln_m_offsets = [inner.ln_m_offset, outer.ln_m_offset];
         let ln_l = [inner.ln_l, outer.ln_l];

@@ -70,6 +70,13 @@ impl Film {
 
 /// A film thickness model for a loaded line contact.
 ///
+/// The film is the *complete* isothermal film of the contact at any load, as the numerical
+/// solver of PHYSICS.md §5.2 would give it: elastic–piezoviscous where the contact is loaded,
+/// tending to Martin's rigid iso-viscous film (h_c/R = 6U/W) as the load vanishes. The bearing's
+/// film–load coupling relies on that rise at light load for a continuous separation of the
+/// rollers (`bearing::coupling`); a model of the EHL regime alone blends itself with Martin's
+/// film, as [`Regression`] does.
+///
 /// Implementations must be total: for any input (NaN, ∞, negative, huge) they return a finite,
 /// non-negative film — falling back to a regression formula, or to zero, and saying so through
 /// [`Film::source`] — and they must do the same amount of work for every input.
