@@ -26,8 +26,8 @@ use bearing_core::{
 /// core tests slice-count independence.
 pub const SLICES: usize = 10;
 /// Steps of [`Kernel::prime`]: the core converges its warm start to |Δh|/h ≤ 10⁻³ from a cold
-/// start in three (`Bearing::settle`).
-pub const PRIME_STEPS: usize = 3;
+/// start in `SETTLE_STEPS` (`Bearing::settle`, which also builds every roller's film law).
+pub const PRIME_STEPS: usize = bearing_core::bearing::SETTLE_STEPS;
 
 /// Which film model the step uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -206,15 +206,9 @@ impl Kernel {
     /// the timed steps all do the same work. The cage angle is not advanced.
     pub fn prime(&mut self, sample: &Sample) {
         let state = self.state(sample);
-        for _ in 0..PRIME_STEPS {
-            match &mut self.model {
-                Model::HubMotor(b) => {
-                    run(b, self.film, &state);
-                }
-                Model::Nu205(b) => {
-                    run(b, self.film, &state);
-                }
-            }
+        match &mut self.model {
+            Model::HubMotor(b) => settle(b, self.film, &state),
+            Model::Nu205(b) => settle(b, self.film, &state),
         }
     }
 
@@ -261,6 +255,30 @@ fn run<'a, const Z: usize>(
         FilmKind::Regression => bearing.step(&Regression, state),
         FilmKind::F32 => bearing.step(&AnnF32, state),
         FilmKind::Int => bearing.step(&AnnInt, state),
+    }
+}
+
+/// [`PRIME_STEPS`] core steps at one state, every roller's film law rebuilt at each.
+fn settle<const Z: usize>(
+    bearing: &mut Bearing<Z, SLICES>,
+    film: FilmKind,
+    state: &OperatingState,
+) {
+    match film {
+        FilmKind::Dry => {
+            for _ in 0..PRIME_STEPS {
+                bearing.step_dry(state);
+            }
+        }
+        FilmKind::Regression => {
+            bearing.settle(&Regression, state, PRIME_STEPS);
+        }
+        FilmKind::F32 => {
+            bearing.settle(&AnnF32, state, PRIME_STEPS);
+        }
+        FilmKind::Int => {
+            bearing.settle(&AnnInt, state, PRIME_STEPS);
+        }
     }
 }
 

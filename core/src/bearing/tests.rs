@@ -101,16 +101,13 @@ fn force_is_the_sum_of_roller_loads_and_stiffness_is_its_derivative() {
         plus.displacement_m[axis] += h;
         let mut minus = s;
         minus.displacement_m[axis] -= h;
+        // `settle` rebuilds every roller's film law at every step: the force as one function of
+        // the state, which is what K is the derivative of (a real-time step refreshes the
+        // stalest laws only, so its force also depends on the history of the step).
         let mut b2 = b.clone();
-        for _ in 0..4 {
-            b2.step(&Regression, &plus);
-        }
-        let fp = b2.step(&Regression, &plus).force_n;
+        let fp = b2.settle(&Regression, &plus, 5).force_n;
         let mut b3 = b.clone();
-        for _ in 0..4 {
-            b3.step(&Regression, &minus);
-        }
-        let fm = b3.step(&Regression, &minus).force_n;
+        let fm = b3.settle(&Regression, &minus, 5).force_n;
         for row in 0..2 {
             let fd = -(fp[row] - fm[row]) / (2.0 * h);
             let k = out.stiffness[row][column];
