@@ -193,8 +193,12 @@ fn solve_load(
         last = (lam, f.total_m, dh);
         let missing = elastic - gap;
         let defined = missing > 0.0;
-        let residual = select(defined, ln(max(missing, 1.0e-30) / h), -1.0);
-        let slope = inverse_exponent * elastic / max(missing, 1.0e-30) - dh / h;
+        // The floor by a bit-mask select, not `max`: with `max` LLVM emitted a branch to a copy
+        // of the loop body specialised for a floored `missing` (a roller whose approach stays
+        // short of the law's offset), and such steps cost 5 instructions more on the M4.
+        let missing_floored = select(missing > 1.0e-30, missing, 1.0e-30);
+        let residual = select(defined, ln(missing_floored / h), -1.0);
+        let slope = inverse_exponent * elastic / missing_floored - dh / h;
         let above = residual > 0.0;
         // Plain values on both sides: a conditional move, no branch.
         hi = if above { lam } else { hi };
