@@ -1,7 +1,8 @@
 //! The bearing step of the hub-motor bearing (17 rollers, 10 slices): dry against lubricated
-//! with the regression film, and the film-model call alone. The ratio lubricated/dry is the
-//! cost of the film coupling (aim: ≤ 3×).
+//! with the regression film and with the integer network (what the HIL replay runs), and the
+//! film-model call alone. The ratio lubricated/dry is the cost of the film coupling (aim: ≤ 3×).
 
+use bearing_core::film::ann::AnnInt;
 use bearing_core::{
     Bearing, BearingGeometry, BearingParams, ContactLaw, Crown, FilmModel, Lubricant, Material,
     OperatingState, Regression,
@@ -70,6 +71,15 @@ fn bench_step(c: &mut Criterion) {
         b.iter(|| {
             j = (j + 1) % states.len();
             black_box(lubricated.step(&Regression, black_box(&states[j])).force_n)
+        })
+    });
+    let mut network = hub_motor_bearing();
+    network.settle(&AnnInt, &states[0], bearing_core::bearing::SETTLE_STEPS);
+    let mut k = 0usize;
+    group.bench_function("lubricated_ann_int", |b| {
+        b.iter(|| {
+            k = (k + 1) % states.len();
+            black_box(network.step(&AnnInt, black_box(&states[k])).force_n)
         })
     });
     group.finish();
