@@ -10,7 +10,7 @@
 //! Method ([`newton`], [`driver`]): full Newton on (P, H₀) with the load row — the approach of
 //! Okamura and Houpert & Hamrock (1986), which reached 4.8 GPa — with the cavitation handled by a
 //! semismooth (primal–dual active-set) Newton method, dense LU from `faer`, Deuflhard's
-//! natural-monotonicity damping, chord reuse of the LU once the iteration contracts, grid
+//! natural-monotonicity test for the damping (α shrunk by a fixed factor on rejection), chord reuse of the LU once the iteration contracts, grid
 //! sequencing (101 → 201 → … → N nodes, each level started from the previous one), a Hertz start
 //! with H(0) from Moes' formula, and continuation in the pressure–viscosity coefficient when the
 //! direct start fails. Why this rather than multigrid: the line contact has only hundreds of
