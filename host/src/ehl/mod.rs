@@ -19,7 +19,10 @@
 //! §5.2). Scaling: P itself is the unknown and η̄ enters only through ε ∝ exp(−ln η̄), which
 //! underflows harmlessly in the contact; rows are equilibrated before the factorisation, so η̄
 //! spanning 20 (Roelands) or 100 (Barus) decades is harmless. Thick films (M ≲ 3) get a
-//! stretched domain so the inlet stays fully flooded ([`driver`]). h_c and h_min are reported
+//! stretched domain so the inlet stays fully flooded ([`driver`]). Thin films (Moes' H_c below
+//! 4·10⁻³ in Hertz units, i.e. M ≳ 200) use a second grid family with extra nodes at both
+//! contact edges, where their inlet meniscus and outlet constriction shrink to a width of order
+//! H_c^⅔ ([`grid::GridSpec::thin_film`]); a case that fails on its family is retried on the other. h_c and h_min are reported
 //! Richardson-extrapolated from the last two grid levels (raw values kept), and the sequence stops
 //! at 401 nodes when the estimated error there is already small.
 //!
@@ -179,8 +182,12 @@ impl SolverOptions {
         Ok(())
     }
 
-    fn grid_spec(&self, nodes: usize) -> GridSpec {
-        let mut spec = GridSpec::with_intervals(nodes - 1);
+    fn grid_spec(&self, nodes: usize, thin_film: bool) -> GridSpec {
+        let mut spec = if thin_film {
+            GridSpec::thin_film(nodes - 1)
+        } else {
+            GridSpec::with_intervals(nodes - 1)
+        };
         spec.x_start = self.x_start;
         spec.x_end = self.x_end;
         spec
