@@ -145,8 +145,9 @@ impl Default for SolverOptions {
 }
 
 impl SolverOptions {
-    /// The default physics with the grid sequence capped at 401 nodes (about 1.5× faster at
-    /// the median; 98/100 LHS samples converge instead of 100/100).
+    /// The default physics with the grid sequence capped at 401 nodes (same median cost as the
+    /// default on the bench's LHS samples, p95 about 3× lower; less accurate at high M, see
+    /// docs/ehl.md).
     pub fn fast() -> Self {
         Self {
             nodes: FAST_NODES,
