@@ -109,15 +109,17 @@ mod tests {
     /// 2 % of the three-grid Richardson
     /// extrapolation from independent solves on 401, 801 and 1601 nodes (observed order).
     /// Cases (Roelands + DH) across the §5.3 domain: M≈13, L≈12 (p_h 1.1 GPa); M≈59, L≈10
-    /// (1.3 GPa); M≈188, L≈10 (2.7 GPa). The raw 801-node values are 0.1 %, 0.7 % and 3.7 %
-    /// off. Known shortfall, not asserted: at M≈400 (p_h 3.3 GPa) the delivered h_c is ≈ 2 % off
-    /// (raw 12.5 %) — the contact spacing is too coarse for H ≲ 10⁻³ (docs/ehl.md).
+    /// (1.3 GPa); M≈188, L≈10 (2.7 GPa); M≈282, L≈10 (3.3 GPa); M≈515, L≈7 (3.3 GPa, on the
+    /// thin-film grid family). The raw 801-node h_c values are 0.1 %, 0.7 %, 3.7 %, 6.9 % and
+    /// 0.5 % off; the delivered ones 0.005 %, 0.01 %, 0.21 %, 0.70 % and 0.02 %.
     #[test]
     fn default_grid_within_richardson_bounds() {
         let cases = [
             ContactCase::new(2.0e5, 5.0, 0.005, 2.26e11, 1.5e-8, 0.02).unwrap(),
             ContactCase::new(5.0e5, 2.0, 0.008, 2.26e11, 2.0e-8, 0.01).unwrap(),
             ContactCase::new(8.0e5, 1.0, 0.004, 2.26e11, 2.0e-8, 0.01).unwrap(),
+            ContactCase::new(1.2e6, 1.0, 0.004, 2.26e11, 2.0e-8, 0.01).unwrap(),
+            ContactCase::new(1.2e6, 0.3, 0.004, 2.26e11, 2.0e-8, 0.01).unwrap(),
         ];
         let default = SolverOptions::default();
         let base = SolverOptions {

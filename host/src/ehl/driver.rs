@@ -19,6 +19,8 @@ use std::time::Instant;
 const COARSEST_NODES: usize = 101;
 /// Smallest grid a result may come from when `adaptive` stops early.
 const MIN_RESULT_NODES: usize = 401;
+/// Moes central film (Hertz units H = hR/b²) below which the thin-film grid family is used.
+const THIN_FILM: f64 = 4e-3;
 /// Adaptive stop: estimated raw relative error of h_c (h_min: twice this) on the result level.
 const ADAPTIVE_TOLERANCE: f64 = 0.01;
 
@@ -26,8 +28,13 @@ const ADAPTIVE_TOLERANCE: f64 = 0.01;
 /// options and reused by every [`Solver::solve`] (dataset generation, HIL re-solves).
 pub struct Solver {
     opts: SolverOptions,
-    /// Grid levels, coarsest first; the last one has `opts.nodes` nodes.
+    /// Grid levels of the family in use, coarsest first; the last one has `opts.nodes` nodes.
     levels: Vec<NewtonWorkspace>,
+    /// The same levels in the other grid family (standard / thin-film, see
+    /// [`Solver::select_family`]); swapped with `levels` when a case needs the other one.
+    other_levels: Vec<NewtonWorkspace>,
+    /// Whether `levels` is the thin-film family.
+    thin_film: bool,
     /// Saved pressure for continuation restarts (allocated once).
     saved_p: Vec<f64>,
 }
@@ -45,14 +52,18 @@ impl Solver {
             counts.push(intervals / 2 + 1);
         }
         counts.reverse();
-        let levels: Vec<NewtonWorkspace> = counts
-            .iter()
-            .map(|&n| NewtonWorkspace::new(&opts.grid_spec(n)))
-            .collect();
+        let family = |thin| -> Vec<NewtonWorkspace> {
+            counts
+                .iter()
+                .map(|&n| NewtonWorkspace::new(&opts.grid_spec(n, thin)))
+                .collect()
+        };
         Ok(Self {
             saved_p: vec![0.0; opts.nodes],
+            levels: family(false),
+            other_levels: family(true),
+            thin_film: false,
             opts,
-            levels,
         })
     }
 
@@ -61,7 +72,8 @@ impl Solver {
         &self.opts
     }
 
-    /// Grid node coordinates X = x/b of the finest (result) grid.
+    /// Grid node coordinates X = x/b of the finest (result) grid of the family in use (that of
+    /// the last solve; the standard family before any).
     pub fn nodes(&self) -> &[f64] {
         &self.finest().nodes
     }
@@ -118,9 +130,41 @@ impl Solver {
         (10.0 * h_c.sqrt() / -self.opts.x_start).clamp(1.0, 20.0)
     }
 
+    /// Picks the grid family for a case: the thin-film family (extra nodes at the contact
+    /// edges, [`super::grid::GridSpec::thin_film`]) when Moes' central film is below
+    /// [`THIN_FILM`] in Hertz units, else the standard one. Swaps storage, no allocation.
+    fn select_family(&mut self, case: &ContactCase) {
+        let thin = self.opts.elastic
+            && formulas::moes_central_film_m(case) / case.film_scale_m() < THIN_FILM;
+        if thin != self.thin_film {
+            std::mem::swap(&mut self.levels, &mut self.other_levels);
+            self.thin_film = thin;
+        }
+    }
+
     /// Solves one case. Unconverged ⇒ [`EhlError::NotConverged`], never a result.
+    ///
+    /// The grid family is chosen by [`Solver::select_family`]; if the solve fails on it, it is
+    /// repeated on the other family (a thin film that the edge-refined grid cannot start from
+    /// the Hertz pressure may still converge on the standard grid, and vice versa).
     pub fn solve(&mut self, case: &ContactCase) -> Result<EhlSolution, EhlError> {
         let t0 = Instant::now();
+        self.select_family(case);
+        let first = self.solve_on_family(case, t0);
+        if first.is_ok() {
+            return first;
+        }
+        std::mem::swap(&mut self.levels, &mut self.other_levels);
+        self.thin_film = !self.thin_film;
+        self.solve_on_family(case, t0).or(first)
+    }
+
+    /// Grid sequence on the family in `levels`.
+    fn solve_on_family(
+        &mut self,
+        case: &ContactCase,
+        t0: Instant,
+    ) -> Result<EhlSolution, EhlError> {
         let scale = self.domain_scale(case);
         self.levels
             .iter_mut()
@@ -183,6 +227,7 @@ impl Solver {
         previous: &EhlSolution,
     ) -> Result<EhlSolution, EhlError> {
         let t0 = Instant::now();
+        self.select_family(case);
         let scale = self.domain_scale(case);
         self.levels
             .iter_mut()

@@ -22,6 +22,14 @@ pub struct GridSpec {
     pub contact_density: f64,
     /// Relative node density of the outlet band [0.35, 1.12] over the inlet/outlet density.
     pub outlet_density: f64,
+    /// Extra node density added in two bands at the edges of the Hertzian contact,
+    /// [−1 − w, −1 + w] (inlet meniscus) and [1 − 2w, 1 + w] (outlet constriction), with
+    /// w = `edge_width`; 0 for the standard family. Thin films (large M) need it: the inlet
+    /// pressure build-up and the outlet constriction then shrink to a width of order H_c^⅔
+    /// (the Hertzian gap opens as (|X| − 1)^{3/2} outside the contact).
+    pub edge_density: f64,
+    /// Half-width w of the edge bands (units of b).
+    pub edge_width: f64,
 }
 
 impl GridSpec {
@@ -33,6 +41,17 @@ impl GridSpec {
             intervals,
             contact_density: 4.0,
             outlet_density: 14.0,
+            edge_density: 0.0,
+            edge_width: 0.05,
+        }
+    }
+
+    /// The thin-film family (see [`GridSpec::edge_density`]): the standard densities plus
+    /// edge bands of density 40 and half-width 0.05 b.
+    pub fn thin_film(intervals: usize) -> Self {
+        Self {
+            edge_density: 40.0,
+            ..Self::with_intervals(intervals)
         }
     }
 }
@@ -43,8 +62,17 @@ fn smooth_box(x: f64, a: f64, b: f64, w: f64) -> f64 {
 }
 
 fn density(spec: &GridSpec, x: f64) -> f64 {
+    let w = spec.edge_width;
+    let edges = if spec.edge_density > 0.0 {
+        spec.edge_density
+            * (smooth_box(x, -1.0 - w, -1.0 + w, 0.25 * w)
+                + smooth_box(x, 1.0 - 2.0 * w, 1.0 + w, 0.25 * w))
+    } else {
+        0.0
+    };
     1.0 + (spec.contact_density - 1.0) * smooth_box(x, -1.4, 1.3, 0.15)
         + (spec.outlet_density - spec.contact_density) * smooth_box(x, 0.35, 1.12, 0.05)
+        + edges
 }
 
 /// Node coordinates X_0 < … < X_n for `spec` (n = intervals).
@@ -116,5 +144,28 @@ mod tests {
             .map(|w| w[1] - w[0])
             .fold(0.0, f64::max);
         assert!(max_outlet < 0.005, "outlet spacing {max_outlet}");
+    }
+
+    /// The thin-film family is nested too, and at 800 intervals resolves both contact edges
+    /// (|X ± 1| ≤ 0.03) with ΔX ≤ 0.001 — a fifth of the H_c^⅔ ≈ 0.005 width of the inlet
+    /// meniscus at M = 1000, L = 1 (H_c ≈ 3.7·10⁻⁴).
+    #[test]
+    fn thin_film_family_resolves_contact_edges() {
+        let coarse = build_nodes(&GridSpec::thin_film(400));
+        let fine = build_nodes(&GridSpec::thin_film(800));
+        for (i, x) in coarse.iter().enumerate() {
+            assert!((fine[2 * i] - x).abs() < 1e-6, "node {i}");
+        }
+        for edge in [-1.0, 1.0] {
+            let max_edge = fine
+                .windows(2)
+                .filter(|w| (w[0] - edge).abs() <= 0.03 && (w[1] - edge).abs() <= 0.03)
+                .map(|w| w[1] - w[0])
+                .fold(0.0, f64::max);
+            assert!(
+                max_edge > 0.0 && max_edge < 0.001,
+                "edge {edge}: {max_edge}"
+            );
+        }
     }
 }

@@ -10,7 +10,7 @@
 //! Method ([`newton`], [`driver`]): full Newton on (P, H₀) with the load row — the approach of
 //! Okamura and Houpert & Hamrock (1986), which reached 4.8 GPa — with the cavitation handled by a
 //! semismooth (primal–dual active-set) Newton method, dense LU from `faer`, Deuflhard's
-//! natural-monotonicity damping, chord reuse of the LU once the iteration contracts, grid
+//! natural-monotonicity test for the damping (α shrunk by a fixed factor on rejection), chord reuse of the LU once the iteration contracts, grid
 //! sequencing (101 → 201 → … → N nodes, each level started from the previous one), a Hertz start
 //! with H(0) from Moes' formula, and continuation in the pressure–viscosity coefficient when the
 //! direct start fails. Why this rather than multigrid: the line contact has only hundreds of
@@ -19,7 +19,10 @@
 //! §5.2). Scaling: P itself is the unknown and η̄ enters only through ε ∝ exp(−ln η̄), which
 //! underflows harmlessly in the contact; rows are equilibrated before the factorisation, so η̄
 //! spanning 20 (Roelands) or 100 (Barus) decades is harmless. Thick films (M ≲ 3) get a
-//! stretched domain so the inlet stays fully flooded ([`driver`]). h_c and h_min are reported
+//! stretched domain so the inlet stays fully flooded ([`driver`]). Thin films (Moes' H_c below
+//! 4·10⁻³ in Hertz units, i.e. M ≳ 200) use a second grid family with extra nodes at both
+//! contact edges, where their inlet meniscus and outlet constriction shrink to a width of order
+//! H_c^⅔ ([`grid::GridSpec::thin_film`]); a case that fails on its family is retried on the other. h_c and h_min are reported
 //! Richardson-extrapolated from the last two grid levels (raw values kept), and the sequence stops
 //! at 401 nodes when the estimated error there is already small.
 //!
@@ -142,8 +145,9 @@ impl Default for SolverOptions {
 }
 
 impl SolverOptions {
-    /// The default physics with the grid sequence capped at 401 nodes (about 1.5× faster at
-    /// the median; 98/100 LHS samples converge instead of 100/100).
+    /// The default physics with the grid sequence capped at 401 nodes (same median cost as the
+    /// default on the bench's LHS samples, p95 about 3× lower; less accurate at high M, see
+    /// docs/ehl.md).
     pub fn fast() -> Self {
         Self {
             nodes: FAST_NODES,
@@ -179,8 +183,12 @@ impl SolverOptions {
         Ok(())
     }
 
-    fn grid_spec(&self, nodes: usize) -> GridSpec {
-        let mut spec = GridSpec::with_intervals(nodes - 1);
+    fn grid_spec(&self, nodes: usize, thin_film: bool) -> GridSpec {
+        let mut spec = if thin_film {
+            GridSpec::thin_film(nodes - 1)
+        } else {
+            GridSpec::with_intervals(nodes - 1)
+        };
         spec.x_start = self.x_start;
         spec.x_end = self.x_end;
         spec

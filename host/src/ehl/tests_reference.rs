@@ -66,35 +66,52 @@ fn martin_rigid_isoviscous_limit() {
     );
 }
 
-/// Moes' formula (Barus, incompressible; Moes 1992 as given by Venner & Lubrecht 2000) — h_c
-/// within 5 % on the default solver for M = 10, 30 × L = 1, 3; M = 100 × L = 1, 3, 10 and
-/// M = 300 × L = 10, 20. Outside this set (full table in docs/ehl.md): L ≥ 10 at M ≤ 30 and
-/// L = 20 at M = 100 come out 5.0–7.5 % above Moes; at M = 300 with L ≤ 3 and at M = 1000 the
-/// 801-node grid is too coarse for the thin film (H ≲ 10⁻³ in Hertz units) and the film comes
-/// out 10–83 % thinner than Moes — a known shortfall (use more nodes there).
+/// Moes' formula (Barus, incompressible; Moes 1992 as given by Venner & Lubrecht 2000) over the
+/// issue's grid M ∈ {10, 30, 100, 300, 1000} × L ∈ {1, 3, 10, 20} (table in docs/ehl.md): h_c
+/// within 5 % at 15 of the 20 points. The other five — M ≤ 30 with L ≥ 10, and M = 100 with
+/// L = 20 — come out 5.0–7.5 % above Moes; for them the test asserts instead that the default
+/// answer is converged in grid and domain (within 1 %, the h_c accuracy, of a solve on
+/// 1601 nodes with the inlet twice as far, X ∈ [−9, 1.5]; measured 0.02–0.5 %), i.e. that the
+/// remaining gap is the formula's, not the solver's.
 #[test]
 fn moes_formula_agreement() {
-    let cases = [
-        (10.0, 1.0),
-        (10.0, 3.0),
-        (30.0, 1.0),
-        (30.0, 3.0),
-        (100.0, 1.0),
-        (100.0, 3.0),
-        (100.0, 10.0),
-        (300.0, 10.0),
-        (300.0, 20.0),
+    let formula_limited = [
+        (10.0, 10.0),
+        (10.0, 20.0),
+        (30.0, 10.0),
+        (30.0, 20.0),
+        (100.0, 20.0),
     ];
     let mut solver = Solver::new(barus_incompressible()).unwrap();
-    for (m, l) in cases {
-        let case = ContactCase::from_moes(m, l).unwrap();
-        let s = solver.solve(&case).unwrap();
-        let ratio = s.central_film_m / formulas::moes_central_film_m(&case);
-        assert!(
-            (ratio - 1.0).abs() < 0.05,
-            "M={m} L={l}: h_c/Moes = {ratio}"
-        );
+    let mut reference = Solver::new(SolverOptions {
+        nodes: 1601,
+        x_start: -9.0,
+        adaptive: false,
+        ..barus_incompressible()
+    })
+    .unwrap();
+    let mut within = 0;
+    for m in [10.0, 30.0, 100.0, 300.0, 1000.0] {
+        for l in [1.0, 3.0, 10.0, 20.0] {
+            let case = ContactCase::from_moes(m, l).unwrap();
+            let s = solver.solve(&case).unwrap();
+            let ratio = s.central_film_m / formulas::moes_central_film_m(&case);
+            println!("M={m} L={l}: h_c/Moes = {ratio:.4} ({} nodes)", s.nodes);
+            if !formula_limited.contains(&(m, l)) {
+                assert!(
+                    (ratio - 1.0).abs() < 0.05,
+                    "M={m} L={l}: h_c/Moes = {ratio}"
+                );
+                within += 1;
+                continue;
+            }
+            let fine = reference.solve(&case).unwrap();
+            let drift = s.central_film_m / fine.central_film_m - 1.0;
+            println!("   converged check: h_c(1601 nodes, X from -9) differs by {drift:.4}");
+            assert!(drift.abs() < 0.01, "M={m} L={l}: not converged ({drift})");
+        }
     }
+    assert_eq!(within, 15);
 }
 
 /// Pan & Hamrock (1989) formulas for Roelands + Dowson–Higginson solutions: h_c and h_min within
