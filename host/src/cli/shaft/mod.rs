@@ -475,7 +475,7 @@ fn cmd_run(a: RunArgs) -> Result<()> {
         &spec_png,
     )
     .map_err(|e| anyhow::anyhow!("writing {}: {e}", spec_png.display()))?;
-    let simulated = s.settle_time + s.record_time;
+    let cost = r.cost(s.dt);
     let reduction = match s.reduction_modes {
         None => serde_json::Value::Null,
         Some(k) => reduction_report(&model, &s, k, a.compare_full, &r)?,
@@ -483,7 +483,7 @@ fn cmd_run(a: RunArgs) -> Result<()> {
     let summary = serde_json::json!({
         "speed_rpm": a.speed_rpm, "speed_end_rpm": a.speed_end_rpm, "dt_s": s.dt, "steps": r.steps, "n_dof": r.n_dof,
         "wall_seconds": r.wall_seconds, "bearing_seconds": r.bearing_seconds,
-        "real_time_factor": simulated / r.wall_seconds,
+        "real_time_factor": cost.real_time_factor, "cost": cost,
         "max_newton_iterations": r.max_newton_iterations, "steadiness": r.steadiness,
         "resolution_limited_steps": r.resolution_limited_steps,
         "envelope": r.envelope, "csv": csv, "reduction": reduction,
@@ -492,9 +492,28 @@ fn cmd_run(a: RunArgs) -> Result<()> {
         println!("{summary}");
     } else {
         println!("{}", serde_json::to_string_pretty(&summary)?);
+        println!("{}", cost_line(&cost));
         println!("plots: {}, {}", orbit_png.display(), spec_png.display());
     }
     Ok(())
+}
+
+/// One line: real-time factor, step, DOFs and where the time per step went.
+fn cost_line(c: &bearing_host::shaft::simulate::CostBreakdown) -> String {
+    format!(
+        "real-time factor {:.3} (dt {:.3} µs, {} DOF, {} steps, {:.2} bearing evaluations/step); \
+         per step: bearings {:.2} µs ({:.2} µs per evaluation of all bearings), shaft linear \
+         algebra {:.2} µs, rest (loads, recording) {:.2} µs",
+        c.real_time_factor,
+        c.dt_s * 1e6,
+        c.n_dof,
+        c.steps,
+        c.bearing_evaluations_per_step,
+        c.bearing_us_per_step,
+        c.bearing_us_per_evaluation,
+        c.linear_algebra_us_per_step,
+        c.rest_us_per_step
+    )
 }
 
 fn cmd_sweep(a: SweepArgs) -> Result<()> {
