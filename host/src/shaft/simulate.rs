@@ -35,7 +35,8 @@ pub struct CostBreakdown {
     pub bearing_us_per_step: f64,
     /// Wall time per step in the shaft's linear algebra: the rest of the integrator step (µs).
     pub linear_algebra_us_per_step: f64,
-    /// Wall time per step outside the integrator: loads, envelopes, recording (µs).
+    /// Wall time per step outside the integrator: loads, envelopes, recording and, during a
+    /// speed ramp, the rebuild of the step operators for the new speed (µs).
     pub rest_us_per_step: f64,
     /// Wall time of one evaluation of all bearings (µs).
     pub bearing_us_per_evaluation: f64,
