@@ -371,7 +371,15 @@ pub fn waterfall(
         let color = Palette99::pick(i + 1).to_rgba();
         chart
             .draw_series(DashedLineSeries::new(
-                [(order * s_lo / 60.0, s_lo), (order * s_hi / 60.0, s_hi)],
+                // Clipped here at f_max: plotters clamps points outside the chart to its edge,
+                // which would bend the line.
+                [
+                    (order * s_lo / 60.0, s_lo),
+                    (
+                        (order * s_hi / 60.0).min(f_max),
+                        s_hi.min(60.0 * f_max / order),
+                    ),
+                ],
                 6,
                 4,
                 color.stroke_width(2),

@@ -644,10 +644,10 @@ fn cmd_sweep(a: SweepArgs) -> Result<()> {
             .iter()
             .map(|p| (p.speed_rpm, p.spectra[side].clone()))
             .collect();
-        let nyquist = points
+        let highest_nyquist = points
             .iter()
             .filter_map(|p| p.spectra[side].last().map(|x| x.0))
-            .fold(f64::INFINITY, f64::min);
+            .fold(0.0, f64::max);
         let png = with_suffix(
             &a.plot.with_extension(""),
             &format!("_waterfall_{name}.png"),
@@ -655,7 +655,7 @@ fn cmd_sweep(a: SweepArgs) -> Result<()> {
         plots::waterfall(
             &rows,
             &orders,
-            f_max.min(nyquist),
+            f_max.min(highest_nyquist),
             &format!("inner-race y displacement, bearing 0, {name}"),
             &png,
         )
