@@ -279,3 +279,119 @@ pub fn mode_shapes(positions: &[f64], modes: &[super::modes::Mode], path: &Path)
     root.present()?;
     Ok(())
 }
+
+/// One row of a waterfall: a speed (rpm) and the amplitude spectrum (Hz, m) there.
+pub type WaterfallRow = (f64, Vec<(f64, f64)>);
+
+/// Waterfall (colour map): frequency (Hz) across, speed (rpm) up, log₁₀ amplitude as colour
+/// over 4 decades below the largest amplitude; each row spans half-way to its neighbours, so
+/// unevenly spaced speeds (the §6.2 sweep) and run-up windows both work. `orders` draws the
+/// lines f = order × speed / 60 (1×, gear mesh, outer-race pass, …) as labelled dashes.
+pub fn waterfall(
+    rows: &[WaterfallRow],
+    orders: &[(String, f64)],
+    f_max: f64,
+    title: &str,
+    path: &Path,
+) -> PlotResult {
+    let root = BitMapBackend::new(path, (1100, 700)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut rows: Vec<&WaterfallRow> = rows.iter().filter(|r| !r.1.is_empty()).collect();
+    rows.sort_by(|a, b| a.0.total_cmp(&b.0));
+    if rows.is_empty() {
+        return Err("waterfall: no spectra".into());
+    }
+    let speeds: Vec<f64> = rows.iter().map(|r| r.0).collect();
+    let half = |i: usize| -> (f64, f64) {
+        let lo = if i > 0 {
+            0.5 * (speeds[i - 1] + speeds[i])
+        } else if speeds.len() > 1 {
+            speeds[0] - 0.5 * (speeds[1] - speeds[0])
+        } else {
+            speeds[0] * 0.95
+        };
+        let hi = if i + 1 < speeds.len() {
+            0.5 * (speeds[i] + speeds[i + 1])
+        } else if speeds.len() > 1 {
+            speeds[i] + 0.5 * (speeds[i] - speeds[i - 1])
+        } else {
+            speeds[0] * 1.05 + 1.0
+        };
+        (lo, hi)
+    };
+    let (s_lo, s_hi) = (half(0).0, half(speeds.len() - 1).1);
+    let a_max = rows
+        .iter()
+        .flat_map(|r| r.1.iter().skip(1).filter(|p| p.0 <= f_max).map(|p| p.1))
+        .fold(1e-300, f64::max);
+    let decades = 4.0;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 24))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(0.0..f_max, s_lo..s_hi)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc("frequency (Hz)")
+        .y_desc("speed (rpm)")
+        .draw()?;
+    for (i, row) in rows.iter().enumerate() {
+        let (lo, hi) = half(i);
+        // Cells one bin wide centred on the bins, or (fine spectra) at most 500 cells across,
+        // each showing the largest amplitude of the bins it covers.
+        let df = row.1.get(1).map_or(f_max, |p| p.0);
+        let width = df.max(f_max / 500.0);
+        let columns = (f_max / width).ceil() as usize + 1;
+        let mut cells = vec![0.0f64; columns];
+        for &(f, a) in row.1.iter().skip(1) {
+            if f <= f_max {
+                let c = ((f / width).round() as usize).min(columns - 1);
+                cells[c] = cells[c].max(a);
+            }
+        }
+        chart.draw_series(
+            cells
+                .iter()
+                .enumerate()
+                .filter(|c| *c.1 > 0.0)
+                .map(|(c, &a)| {
+                    let level = ((a / a_max).log10() / decades + 1.0).clamp(0.0, 1.0);
+                    let color = HSLColor(0.66 * (1.0 - level), 0.9, 0.25 + 0.35 * level);
+                    let f0 = (c as f64 - 0.5) * width;
+                    Rectangle::new(
+                        [(f0.max(0.0), lo), ((f0 + width).min(f_max), hi)],
+                        color.filled(),
+                    )
+                }),
+        )?;
+    }
+    for (i, (name, order)) in orders.iter().enumerate() {
+        let color = Palette99::pick(i + 1).to_rgba();
+        chart
+            .draw_series(DashedLineSeries::new(
+                // Clipped here at f_max: plotters clamps points outside the chart to its edge,
+                // which would bend the line.
+                [
+                    (order * s_lo / 60.0, s_lo),
+                    (
+                        (order * s_hi / 60.0).min(f_max),
+                        s_hi.min(60.0 * f_max / order),
+                    ),
+                ],
+                6,
+                4,
+                color.stroke_width(2),
+            ))?
+            .label(name.clone())
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()?;
+    root.present()?;
+    Ok(())
+}

@@ -10,13 +10,57 @@
 use nalgebra::DVector;
 
 use super::bearing::{BearingReaction, BearingSpec, RollerState};
-use super::integrator::{NewtonSettings, Scheme, StepError};
+use super::integrator::{NewtonSettings, Scheme, StepError, StepTotals};
 use super::loads::SpinAt;
 use super::model::RotorModel;
 use super::operating::{build_bearings, OperatingError};
 use super::speed_profile::SpeedProfile;
 use super::statics::equilibrium;
 use super::system::TimeSystem;
+
+/// Where the wall time of a run went, per step.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct CostBreakdown {
+    /// Simulated seconds per wall-clock second of the integration loop.
+    pub real_time_factor: f64,
+    /// Time step (s).
+    pub dt_s: f64,
+    /// Integrated coordinates.
+    pub n_dof: usize,
+    /// Steps.
+    pub steps: usize,
+    /// Mean bearing evaluations per step (each evaluates every bearing once).
+    pub bearing_evaluations_per_step: f64,
+    /// Wall time per step in the bearing models (µs).
+    pub bearing_us_per_step: f64,
+    /// Wall time per step in the shaft's linear algebra: the rest of the integrator step (µs).
+    pub linear_algebra_us_per_step: f64,
+    /// Wall time per step outside the integrator: loads, envelopes, recording and, during a
+    /// speed ramp, the rebuild of the step operators for the new speed (µs).
+    pub rest_us_per_step: f64,
+    /// Wall time of one evaluation of all bearings (µs).
+    pub bearing_us_per_evaluation: f64,
+}
+
+impl RunResult {
+    /// The cost breakdown of this run at step `dt` (s).
+    pub fn cost(&self, dt: f64) -> CostBreakdown {
+        let t = &self.totals;
+        let per_step = 1e6 / t.steps.max(1) as f64;
+        CostBreakdown {
+            real_time_factor: t.steps as f64 * dt / self.wall_seconds,
+            dt_s: dt,
+            n_dof: self.n_dof,
+            steps: t.steps,
+            bearing_evaluations_per_step: t.evaluations_per_step(),
+            bearing_us_per_step: t.bearing_seconds * per_step,
+            linear_algebra_us_per_step: (t.step_seconds - t.bearing_seconds) * per_step,
+            rest_us_per_step: (self.wall_seconds - t.step_seconds) * per_step,
+            bearing_us_per_evaluation: 1e6 * t.bearing_seconds
+                / t.bearing_evaluations.max(1) as f64,
+        }
+    }
+}
 
 /// Relative change of the displacement envelope between the two halves of the record below
 /// which a run counts as steady.
@@ -107,10 +151,12 @@ pub struct RunResult {
     pub steps: usize,
     /// Integrated coordinates (full DOFs or reduced).
     pub n_dof: usize,
-    /// Wall time of the integration (s).
+    /// Wall time of the integration loop (s): steps, loads, recording.
     pub wall_seconds: f64,
     /// Part of it in bearing evaluations (s).
     pub bearing_seconds: f64,
+    /// The integrator's totals: steps, bearing evaluations, time in steps and in the bearings.
+    pub totals: StepTotals,
     /// Largest Newton iteration count of any step.
     pub max_newton_iterations: usize,
     /// Steps whose Newton converged only to the bearing model's resolution
@@ -316,7 +362,8 @@ pub fn run(
         steps: settle_steps + record_steps,
         n_dof: n,
         wall_seconds,
-        bearing_seconds: it.bearing_seconds,
+        bearing_seconds: it.totals.bearing_seconds,
+        totals: it.totals,
         max_newton_iterations: max_iter,
         resolution_limited_steps: limited,
     })

@@ -475,7 +475,30 @@ fn cmd_run(a: RunArgs) -> Result<()> {
         &spec_png,
     )
     .map_err(|e| anyhow::anyhow!("writing {}: {e}", spec_png.display()))?;
-    let simulated = s.settle_time + s.record_time;
+    let mut plotted = vec![
+        orbit_png.display().to_string(),
+        spec_png.display().to_string(),
+    ];
+    if end.is_some() {
+        // Run-up / run-down: short-time spectra of y over the record, one row per window.
+        let sample_dt = s.dt * s.record_every as f64;
+        let rows = runup_spectra(&r, &y, sample_dt);
+        let top = r.samples.iter().map(|x| x.spin_speed).fold(0.0, f64::max);
+        let orders = spectrum_orders(&model, 1.0)?;
+        let f_max = 1.3 * orders.iter().map(|o| o.1).fold(1.0, f64::max) * top
+            / (2.0 * std::f64::consts::PI);
+        let png = with_suffix(&a.out, "_waterfall.png");
+        plots::waterfall(
+            &rows,
+            &orders,
+            f_max.min(0.5 / sample_dt),
+            &format!("waterfall of y, node {}", r.probe_nodes[0]),
+            &png,
+        )
+        .map_err(|e| anyhow::anyhow!("writing {}: {e}", png.display()))?;
+        plotted.push(png.display().to_string());
+    }
+    let cost = r.cost(s.dt);
     let reduction = match s.reduction_modes {
         None => serde_json::Value::Null,
         Some(k) => reduction_report(&model, &s, k, a.compare_full, &r)?,
@@ -483,7 +506,7 @@ fn cmd_run(a: RunArgs) -> Result<()> {
     let summary = serde_json::json!({
         "speed_rpm": a.speed_rpm, "speed_end_rpm": a.speed_end_rpm, "dt_s": s.dt, "steps": r.steps, "n_dof": r.n_dof,
         "wall_seconds": r.wall_seconds, "bearing_seconds": r.bearing_seconds,
-        "real_time_factor": simulated / r.wall_seconds,
+        "real_time_factor": cost.real_time_factor, "cost": cost,
         "max_newton_iterations": r.max_newton_iterations, "steadiness": r.steadiness,
         "resolution_limited_steps": r.resolution_limited_steps,
         "envelope": r.envelope, "csv": csv, "reduction": reduction,
@@ -492,9 +515,81 @@ fn cmd_run(a: RunArgs) -> Result<()> {
         println!("{summary}");
     } else {
         println!("{}", serde_json::to_string_pretty(&summary)?);
-        println!("plots: {}, {}", orbit_png.display(), spec_png.display());
+        println!("{}", cost_line(&cost));
+        println!("plots: {}", plotted.join(", "));
     }
     Ok(())
+}
+
+/// One line: real-time factor, step, DOFs and where the time per step went.
+fn cost_line(c: &bearing_host::shaft::simulate::CostBreakdown) -> String {
+    format!(
+        "real-time factor {:.3} (dt {:.3} µs, {} DOF, {} steps, {:.2} bearing evaluations/step); \
+         per step: bearings {:.2} µs ({:.2} µs per evaluation of all bearings), shaft linear \
+         algebra {:.2} µs, rest (loads, recording, a ramp's operator rebuilds) {:.2} µs",
+        c.real_time_factor,
+        c.dt_s * 1e6,
+        c.n_dof,
+        c.steps,
+        c.bearing_evaluations_per_step,
+        c.bearing_us_per_step,
+        c.bearing_us_per_evaluation,
+        c.linear_algebra_us_per_step,
+        c.rest_us_per_step
+    )
+}
+
+/// Excitation orders for waterfall lines: 1×, each gear mesh and each roller bearing's
+/// outer-race pass (f_bpo / f_s, from its geometry at spin speed `omega` — it is a fixed order).
+fn spectrum_orders(model: &RotorModel, omega: f64) -> Result<Vec<(String, f64)>> {
+    let fs = omega / (2.0 * std::f64::consts::PI);
+    let mut orders = vec![("1×".to_string(), 1.0)];
+    for m in mesh_orders(model) {
+        orders.push((format!("mesh {m}×"), m));
+    }
+    let mut seen: Vec<PathBuf> = Vec::new();
+    for b in &model.description.bearings {
+        if let BearingSpec::Roller { config, .. } = &b.spec {
+            if seen.contains(config) {
+                continue;
+            }
+            seen.push(config.clone());
+            let f = bearing_host::shaft::roller_bearing::outer_race_pass_hz(config, omega)?;
+            let stem = config
+                .file_stem()
+                .map_or("".into(), |s| s.to_string_lossy());
+            orders.push((format!("outer-race pass {stem} {:.2}×", f / fs), f / fs));
+        }
+    }
+    Ok(orders)
+}
+
+/// Short-time spectra of a run-up record: windows of about 1/8 of the record (a power of two,
+/// ≥ 64 samples) advancing by a quarter window, each labelled with its mean speed (rpm).
+fn runup_spectra(
+    r: &bearing_host::shaft::simulate::RunResult,
+    y: &[f64],
+    sample_dt: f64,
+) -> Vec<plots::WaterfallRow> {
+    let mut window = 64usize;
+    while window * 2 <= y.len() / 8 {
+        window *= 2;
+    }
+    let mut rows = Vec::new();
+    let mut start = 0;
+    while start + window <= y.len() {
+        let speed = r.samples[start..start + window]
+            .iter()
+            .map(|s| s.spin_speed)
+            .sum::<f64>()
+            / window as f64;
+        rows.push((
+            speed * 30.0 / std::f64::consts::PI,
+            amplitude_spectrum(&y[start..start + window], sample_dt),
+        ));
+        start += window / 4;
+    }
+    rows
 }
 
 fn cmd_sweep(a: SweepArgs) -> Result<()> {
@@ -540,6 +635,37 @@ fn cmd_sweep(a: SweepArgs) -> Result<()> {
     bar.finish_and_clear();
     plots::envelopes(&points, &a.plot)
         .map_err(|e| anyhow::anyhow!("writing {}: {e}", a.plot.display()))?;
+    let orders = spectrum_orders(&model, 1.0)?;
+    let top_hz = top / 60.0;
+    let f_max = 1.3 * orders.iter().map(|o| o.1).fold(1.0, f64::max) * top_hz;
+    let mut waterfalls = Vec::new();
+    for (side, name) in [(0, "lubricated"), (1, "dry")] {
+        let rows: Vec<plots::WaterfallRow> = points
+            .iter()
+            .map(|p| (p.speed_rpm, p.spectra[side].clone()))
+            .collect();
+        let highest_nyquist = points
+            .iter()
+            .filter_map(|p| p.spectra[side].last().map(|x| x.0))
+            .fold(0.0, f64::max);
+        let png = with_suffix(
+            &a.plot.with_extension(""),
+            &format!("_waterfall_{name}.png"),
+        );
+        plots::waterfall(
+            &rows,
+            &orders,
+            f_max.min(highest_nyquist),
+            &format!("inner-race y displacement, bearing 0, {name}"),
+            &png,
+        )
+        .map_err(|e| anyhow::anyhow!("writing {}: {e}", png.display()))?;
+        waterfalls.push(png.display().to_string());
+    }
+    let mesh = mesh_orders(&model)
+        .into_iter()
+        .fold(None, |m: Option<f64>, o| Some(m.map_or(o, |m| m.max(o))));
+    let comparison = bearing_host::shaft::sweep::compare_films(&points, top, mesh);
     let side = |lub: bool| {
         let e = |p: &bearing_host::shaft::sweep::SweepPoint| if lub { p.lubricated } else { p.dry };
         serde_json::json!({
@@ -551,31 +677,77 @@ fn cmd_sweep(a: SweepArgs) -> Result<()> {
             "max_acceleration_m_s2": points.iter().map(|p| e(p).max_acceleration_m_s2).collect::<Vec<_>>(),
             "steadiness": points.iter().map(|p| p.steadiness[usize::from(!lub)]).collect::<Vec<_>>(),
             "resolution_limited_steps": points.iter().map(|p| p.resolution_limited_steps[usize::from(!lub)]).collect::<Vec<_>>(),
+            "natural_frequencies_hz": points.iter().map(|p| p.natural_frequencies_hz[usize::from(!lub)].clone()).collect::<Vec<_>>(),
         })
     };
     if a.model.json {
         let speeds: Vec<f64> = points.iter().map(|p| p.speed_rpm).collect();
         println!(
             "{}",
-            serde_json::json!({"speeds_rpm": speeds, "lubricated": side(true), "dry": side(false)})
+            serde_json::json!({"speeds_rpm": speeds, "lubricated": side(true), "dry": side(false),
+                "comparison": comparison})
         );
         return Ok(());
     }
     println!(
-        "{:>8} {:>14} {:>14} {:>14} {:>14} {:>10}",
-        "rpm", "k_b lub (N/m)", "k_b dry (N/m)", "u lub (µm)", "u dry (µm)", "steady"
+        "{:>8} {:>13} {:>13} {:>11} {:>11} {:>11} {:>11} {:>9} {:>9}",
+        "rpm",
+        "k_b lub (N/m)",
+        "k_b dry (N/m)",
+        "h_c (µm)",
+        "u lub (µm)",
+        "u dry (µm)",
+        "f1 lub (Hz)",
+        "f1 dry",
+        "steady"
     );
+    let f1 = |p: &bearing_host::shaft::sweep::SweepPoint, side: usize| {
+        p.natural_frequencies_hz[side]
+            .first()
+            .copied()
+            .unwrap_or(f64::NAN)
+    };
     for p in &points {
         println!(
-            "{:>8.0} {:>14.4e} {:>14.4e} {:>14.4} {:>14.4} {:>10.1e}",
+            "{:>8.0} {:>13.4e} {:>13.4e} {:>11.4} {:>11.4} {:>11.4} {:>11.2} {:>9.2} {:>9.1e}",
             p.speed_rpm,
             p.lubricated.max_bearing_stiffness_n_per_m,
             p.dry.max_bearing_stiffness_n_per_m,
+            p.lubricated.max_central_film_m.unwrap_or(f64::NAN) * 1e6,
             p.lubricated.max_displacement_m * 1e6,
             p.dry.max_displacement_m * 1e6,
+            f1(p, 0),
+            f1(p, 1),
             p.steadiness[0].max(p.steadiness[1])
         );
     }
-    println!("plot: {}", a.plot.display());
+    if let Some(c) = &comparison {
+        let opt = |v: Option<f64>| v.map_or("none in the sweep".to_string(), |x| format!("{x:.0}"));
+        println!("lubricated vs dry at {:.0} rpm:", c.speed_rpm);
+        println!(
+            "  central film {} µm; bearing stiffness {:.4e} vs {:.4e} N/m ({:+.1} %)",
+            c.central_film_m
+                .map_or("-".to_string(), |h| format!("{:.4}", h * 1e6)),
+            c.bearing_stiffness_n_per_m[0],
+            c.bearing_stiffness_n_per_m[1],
+            100.0 * c.stiffness_increase
+        );
+        println!(
+            "  first natural frequency {:.2} vs {:.2} Hz (shift {:+.2} Hz, {:+.2} %)",
+            c.first_natural_frequency_hz[0],
+            c.first_natural_frequency_hz[1],
+            c.first_natural_frequency_shift_hz,
+            100.0 * c.first_natural_frequency_shift_hz / c.first_natural_frequency_hz[1]
+        );
+        println!(
+            "  {}× crossing of the first natural frequency: {} vs {} rpm; largest response at {:.0} vs {:.0} rpm",
+            mesh.unwrap_or(1.0),
+            opt(c.order_critical_speed_rpm[0]),
+            opt(c.order_critical_speed_rpm[1]),
+            c.peak_response_speed_rpm[0],
+            c.peak_response_speed_rpm[1]
+        );
+    }
+    println!("plots: {}, {}", a.plot.display(), waterfalls.join(", "));
     Ok(())
 }
