@@ -156,21 +156,11 @@ impl Anchor {
         martin: [f32; 2],
         ln_load: f32,
     ) -> Self {
-        let at = min(max(ln_load, LN_NODE_MIN), LN_NODE_MAX);
-        let mut values = [[0.0f32; 2]; 2];
-        for (k, v) in values.iter_mut().enumerate() {
-            let ln_node = at + k as f32 * SLOPE_STEP;
-            let load_n = exp(ln_node);
-            let inv_load = exp(-ln_node);
-            for ((e, template), &b) in v.iter_mut().zip(contacts.iter()).zip(martin.iter()) {
-                let film = model.film(&ContactInput {
-                    load_n,
-                    ..*template
-                });
-                *e = ln(max(ehl_part(film.central_m, b * inv_load), FILM_FLOOR_M));
-            }
-        }
-        let [v0, v1] = values;
+        let at = clamp_ln_load(ln_load);
+        let ln_central = |ln_node: f32| {
+            ehl_parts(model, &contacts, martin, ln_node).map(|(e, _)| ln(max(e, FILM_FLOOR_M)))
+        };
+        let (v0, v1) = (ln_central(at), ln_central(at + SLOPE_STEP));
         let slope = |c: usize| {
             let d = (v1.get(c).copied().unwrap_or(0.0) - v0.get(c).copied().unwrap_or(0.0))
                 / SLOPE_STEP;
@@ -188,8 +178,7 @@ impl Anchor {
     /// |Δ ln Q| + |Δ ln u| (both move ln h by a fraction of their change). The real-time step
     /// re-anchors the farthest first.
     pub(crate) fn staleness(&self, ln_load: f32, ln_speed: f32) -> f32 {
-        let at = min(max(ln_load, LN_NODE_MIN), LN_NODE_MAX);
-        let d_load = at - self.ln_load;
+        let d_load = clamp_ln_load(ln_load) - self.ln_load;
         let d_speed = ln_speed - self.ln_speed;
         max(d_load, -d_load) + max(d_speed, -d_speed)
     }
@@ -216,28 +205,21 @@ impl StepFilmLaw {
         martin: [f32; 2],
         (ln_lo, ln_hi): (f32, f32),
     ) -> Self {
-        let centre = min(max(0.5 * (ln_lo + ln_hi), LN_NODE_MIN), LN_NODE_MAX);
+        let centre = clamp_ln_load(0.5 * (ln_lo + ln_hi));
         let half_span = max(0.5 * (ln_hi - ln_lo), MIN_HALF_SPAN);
         let mut central = [[0.0f32; FILM_NODES]; 2];
         let mut minimum = [[0.0f32; FILM_NODES]; 2];
         for k in 0..FILM_NODES {
-            let ln_load = centre + (k as f32 - 1.0) * half_span;
-            let load_n = exp(ln_load);
-            let inv_load = exp(-ln_load);
-            for (((template, c), m), &b) in contacts
-                .iter()
-                .zip(central.iter_mut())
-                .zip(minimum.iter_mut())
-                .zip(martin.iter())
-            {
-                let film = model.film(&ContactInput {
-                    load_n,
-                    ..*template
-                });
-                let hydro = b * inv_load;
+            let parts = ehl_parts(
+                model,
+                &contacts,
+                martin,
+                centre + (k as f32 - 1.0) * half_span,
+            );
+            for ((c, m), (ce, me)) in central.iter_mut().zip(minimum.iter_mut()).zip(parts) {
                 if let (Some(cv), Some(mv)) = (c.get_mut(k), m.get_mut(k)) {
-                    *cv = ehl_part(film.central_m, hydro);
-                    *mv = ehl_part(film.minimum_m, hydro * (MARTIN_MINIMUM / MARTIN_CENTRAL));
+                    *cv = ce;
+                    *mv = me;
                 }
             }
         }
@@ -336,6 +318,36 @@ impl StepFilmLaw {
         }
         out
     }
+}
+
+/// ln Q limited to the loads where nodes and anchors are placed.
+fn clamp_ln_load(ln_load: f32) -> f32 {
+    min(max(ln_load, LN_NODE_MIN), LN_NODE_MAX)
+}
+
+/// The non-hydrodynamic parts (central, minimum) of both contacts' films at λ = `ln_load`: one
+/// call of `model` per contact, Martin's film removed in quadrature.
+fn ehl_parts<F: FilmModel + ?Sized>(
+    model: &F,
+    contacts: &[ContactInput; 2],
+    martin: [f32; 2],
+    ln_load: f32,
+) -> [(f32, f32); 2] {
+    let load_n = exp(ln_load);
+    let inv_load = exp(-ln_load);
+    let mut out = [(0.0, 0.0); 2];
+    for ((o, template), &b) in out.iter_mut().zip(contacts.iter()).zip(martin.iter()) {
+        let film = model.film(&ContactInput {
+            load_n,
+            ..*template
+        });
+        let hydro = b * inv_load;
+        *o = (
+            ehl_part(film.central_m, hydro),
+            ehl_part(film.minimum_m, hydro * (MARTIN_MINIMUM / MARTIN_CENTRAL)),
+        );
+    }
+    out
 }
 
 /// The part of a film `h` left after removing the hydrodynamic film `hydro` in quadrature,
