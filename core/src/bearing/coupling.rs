@@ -6,7 +6,7 @@
 //!
 //! **Continuity at separation.** The film sum is written H = √(H_e² + H_RI²), with Martin's
 //! rigid iso-viscous film H_RI = 6η₀u_m(R_in + R_out)l/Q exact and H_e the rest of the film
-//! model's (complete) film, interpolated over the step's film nodes (`film_law`). At high load
+//! model's (complete) film, interpolated in the bearing's film table (`film_table`). At high load
 //! H_RI vanishes and the film model rules; as the rollers separate, Q → 0 and Martin's
 //! hydrodynamic load takes over smoothly. Roller forces are therefore continuous — and
 //! differentiable — in the displacement across the transition.
@@ -17,14 +17,14 @@
 //! Palmgren law). With it,
 //! 1. the scalar equation δ_off + (Q/L)^(1/n) = δ_geo + H(Q) is solved in λ = ln Q by
 //!    [`INNER_ITERATIONS`] safeguarded Newton steps, the film following the step's film law
-//!    (`film_law`);
+//!    (`film_table`);
 //! 2. the slices are evaluated at the resulting approach, a fresh power law is fitted there and
 //!    the equation re-solved in [`REFINE_ITERATIONS`] steps; load and moment follow that law.
 //!
 //! With a warm start from the previous step this meets |Δh|/h ≤ 10⁻³ (tested against a
 //! converged f64 iteration over the PHYSICS.md §5.3 domain).
 
-use super::film_law::{FilmSum, StepFilmLaw};
+use super::film_table::{FilmSum, StepFilms};
 use crate::contact::{RollerLoad, SlicedRoller};
 use crate::film::{ContactInput, Regime};
 use crate::math::{exp, ln, max, min, select};
@@ -170,7 +170,7 @@ struct Solved {
 /// continued by its tangent (second-order accurate, and free).
 fn solve_load(
     law: &PowerLaw,
-    films: &StepFilmLaw,
+    films: &StepFilms<'_>,
     geometric_approach_m: f32,
     start: f32,
     iterations: usize,
@@ -222,7 +222,7 @@ fn solve_load(
 /// last step (updated).
 pub(crate) fn solve_roller<const S: usize>(
     roller: &SlicedRoller<S>,
-    films: &StepFilmLaw,
+    films: &StepFilms<'_>,
     ln_m_offsets: [f32; 2],
     ln_l: [f32; 2],
     geometric_approach_m: f32,

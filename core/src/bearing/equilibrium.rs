@@ -54,9 +54,9 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             converged: false,
         };
         for iteration in 0..=max_iterations {
-            // `settle(…, 1)` renews every roller's film anchor: the force is then one function
-            // of the state, as a Newton iteration on it needs (a real-time step renews only the
-            // stalest, so its force also depends on the history of steps).
+            // `settle(…, 1)` renews the whole film table at this speed: the force is then one
+            // function of the state, as a Newton iteration on it needs (a real-time step renews
+            // one node, so its force can also depend on the speeds of earlier steps).
             let out: BearingOutput<Z> = *match film {
                 Some(f) => self.settle(f, &s, 1),
                 None => self.step_dry(&s),

@@ -9,12 +9,12 @@
 
 mod coupling;
 mod equilibrium;
-mod film_law;
+mod film_table;
 mod output;
 
 pub use coupling::{INNER_ITERATIONS, REFINE_ITERATIONS};
 pub use equilibrium::Equilibrium;
-pub use film_law::{FILM_NODES, REFRESHES_PER_STEP};
+pub use film_table::{REFRESHES_PER_STEP, SPEED_EXPONENT, TABLE_NODES, TABLE_STEP};
 pub use output::{BearingOutput, RollerOutput, StepStatus};
 
 use crate::contact::{ContactLaw, SlicedRoller};
@@ -23,7 +23,7 @@ use crate::film::{ContactInput, FilmModel, FilmSource, Regime};
 use crate::math::{ln, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use coupling::{solve_roller, ContactContext, RollerMemory};
-use film_law::{Anchor, StepFilmLaw};
+use film_table::FilmTable;
 use output::StiffnessSums;
 
 /// Everything that defines a lubricated roller bearing.
@@ -119,12 +119,12 @@ pub struct Bearing<const Z: usize, const S: usize> {
     /// What each roller carries to the next step: the warm start.
     memory: [RollerMemory; Z],
     /// ln Q of the lightest and heaviest loaded roller at the last step: where the next step
-    /// evaluates the film model.
+    /// renews the film table first.
     load_span: (f32, f32),
-    /// Each roller's film anchor (`film_law`), the stalest renewed first.
-    anchors: [Anchor; Z],
-    /// No anchor has been set since `new` or `reset`: the next step anchors every roller.
-    anchors_stale: bool,
+    /// The film of both contact kinds against the load (`film_table`).
+    table: FilmTable,
+    /// The table has not been filled since `new` or `reset`: the next step fills all of it.
+    table_stale: bool,
     output: BearingOutput<Z>,
 }
 
@@ -165,8 +165,8 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             pitch_angle_rad,
             memory: [RollerMemory::default(); Z],
             load_span: DEFAULT_LOAD_SPAN,
-            anchors: [Anchor::default(); Z],
-            anchors_stale: true,
+            table: FilmTable::default(),
+            table_stale: true,
             output: BearingOutput::ZERO,
         })
     }
@@ -190,7 +190,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     pub fn reset(&mut self) {
         self.memory = [RollerMemory::default(); Z];
         self.load_span = DEFAULT_LOAD_SPAN;
-        self.anchors_stale = true;
+        self.table_stale = true;
     }
 
     /// Per-step data of the two contacts (inner, outer).
@@ -222,14 +222,12 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
 
     /// One lubricated step: roller films from `film`, film-coupled loads, forces, stiffness.
     ///
-    /// The film model is called at [`FILM_NODES`] loads per contact, and the film anchors of
-    /// the [`REFRESHES_PER_STEP`] rollers whose load or speed moved farthest since are renewed
-    /// at their last loads (`film_law`), so that every step costs the same; the first step
-    /// after [`Bearing::new`] or [`Bearing::reset`] anchors every roller, twice (at the warm
-    /// start's loads and at the loads solved with those anchors). [`Bearing::settle`] (every
-    /// anchor renewed at every step) converges the warm start before a real-time loop, and is
-    /// the call for quasi-static use (equilibrium iterations), where the force must be one
-    /// function of the state.
+    /// The film model is called at [`REFRESHES_PER_STEP`] node(s) of the bearing's film table
+    /// per contact kind (`film_table`: the node whose speed is farthest from this step's), so
+    /// every step costs the same; the first step after [`Bearing::new`] or [`Bearing::reset`]
+    /// fills the whole table. [`Bearing::settle`] (the whole table at every step) converges
+    /// the warm start before a real-time loop, and is the call for quasi-static use
+    /// (equilibrium iterations), where the force must be one function of the state.
     ///
     /// A refused `state` leaves the warm start as it was and returns a zero output whose
     /// status names the bad field.
@@ -238,20 +236,16 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         film: &F,
         state: &OperatingState,
     ) -> &BearingOutput<Z> {
-        if self.anchors_stale {
-            // No anchor yet: set them all, solve, and set them again at those loads.
-            self.step_refreshing(film, state, true);
-            return self.step_refreshing(film, state, true);
-        }
-        self.step_refreshing(film, state, false)
+        let renew_all = self.table_stale;
+        self.step_renewing(film, state, renew_all)
     }
 
-    /// [`Bearing::step`], renewing every roller's film anchor (`refresh_all`) or the stalest.
-    fn step_refreshing<F: FilmModel + ?Sized>(
+    /// [`Bearing::step`], renewing every node of the film table (`renew_all`) or the stalest.
+    fn step_renewing<F: FilmModel + ?Sized>(
         &mut self,
         film: &F,
         state: &OperatingState,
-        refresh_all: bool,
+        renew_all: bool,
     ) -> &BearingOutput<Z> {
         if let Err(e) = state.check() {
             return self.reject(e);
@@ -277,62 +271,18 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             standstill(film.served_loads(&templates[0])),
             standstill(film.served_loads(&templates[1])),
         ];
-        // The film nodes span last step's loaded rollers, but only where the model serves both
-        // contacts: a node outside its domain would bend the interpolation of the served
-        // contacts towards the fallback formula (the anchors then set the level).
         let martin = [inner.martin, outer.martin];
-        let served_lo = crate::math::max(served[0].ln_load_min, served[1].ln_load_min);
-        let served_hi = crate::math::min(served[0].ln_load_max, served[1].ln_load_max);
-        let (span_lo, span_hi) = self.load_span;
-        let node_lo = crate::math::min(crate::math::max(span_lo, served_lo), span_hi);
-        let node_hi = crate::math::max(crate::math::min(span_hi, served_hi), node_lo);
-        let films = StepFilmLaw::new(film, templates, martin, (node_lo, node_hi));
-        // Renew the anchors of the stalest rollers (or of all) at their last loads.
-        let refresh = |bearing: &mut Self, j: usize| {
-            let ln_load = bearing.memory.get(j).map_or(0.0, |m| m.ln_load);
-            if let Some(anchor) = bearing.anchors.get_mut(j) {
-                *anchor = Anchor::new(film, templates, martin, ln_load);
-            }
-        };
-        if refresh_all {
-            for j in 0..Z {
-                refresh(self, j);
-            }
-        } else {
-            // Load or speed moved farthest since the anchor first, a fixed number per step:
-            // each pick is a branch-free scan over the rollers.
-            let ln_speed = ln(templates[0].entrainment_speed_m_s);
-            let mut staleness = [0.0f32; Z];
-            for ((st, anchor), memory) in staleness
-                .iter_mut()
-                .zip(self.anchors.iter())
-                .zip(self.memory.iter())
-            {
-                *st = anchor.staleness(memory.ln_load, ln_speed);
-            }
-            for _ in 0..REFRESHES_PER_STEP {
-                let mut pick = 0usize;
-                let mut worst = f32::MIN;
-                for (j, &st) in staleness.iter().enumerate() {
-                    let more = st > worst;
-                    worst = crate::math::select(more, st, worst);
-                    // Arithmetic, not a branch: the work must not depend on the loads.
-                    let m = usize::from(more);
-                    pick = pick * (1 - m) + j * m;
-                }
-                refresh(self, pick);
-                if let Some(st) = staleness.get_mut(pick) {
-                    *st = f32::MIN;
-                }
-            }
-        }
-        self.anchors_stale = false;
+        let load_span = self.load_span;
+        // The table moves out of `self` for the step (a copy the optimiser elides), so the
+        // rollers' closure below may borrow the bearing mutably.
+        let mut table = self.table;
+        let films = table.step(film, templates, martin, load_span, renew_all);
+        self.table_stale = false;
         let ln_m_offsets = [inner.ln_m_offset, outer.ln_m_offset];
         let ln_l = [inner.ln_l, outer.ln_l];
         let mut span = (f32::MAX, f32::MIN);
         self.assemble(state, |bearing, j, geometric, tilt| {
             let mut memory = bearing.memory.get(j).copied().unwrap_or_default();
-            let films = films.anchored(&bearing.anchors.get(j).copied().unwrap_or_default());
             let r = solve_roller(
                 &bearing.roller,
                 &films,
@@ -376,28 +326,30 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             };
             (r.load, roller, coupling)
         });
-        // The loads the next step's film model sees; unchanged when nothing is loaded.
+        self.table = table;
+        // The loads the next step renews the table at first; unchanged when nothing is loaded.
         if span.0 <= span.1 {
             self.load_span = span;
         }
         &self.output
     }
 
-    /// Run [`Bearing::step`] `steps` times at the same state, renewing every roller's film
-    /// anchor at every step, so the warm start converges before a real-time loop begins
+    /// Run [`Bearing::step`] `steps ≥ 1` times at the same state, the first renewing the whole
+    /// film table, so the warm start converges before a real-time loop begins
     /// ([`SETTLE_STEPS`] reach |Δh|/h ≤ 10⁻³ from a cold start; a crowned roller just touching
-    /// needs four: its first step has neither a power law of its own nor film nodes at its
-    /// load).
+    /// needs four: its first step has no power law of its own).
     pub fn settle<F: FilmModel + ?Sized>(
         &mut self,
         film: &F,
         state: &OperatingState,
         steps: usize,
     ) -> &BearingOutput<Z> {
-        for _ in 0..steps.saturating_sub(1) {
-            self.step_refreshing(film, state, true);
+        // The table depends on the speed alone: filled once, it is the model's at this state.
+        self.step_renewing(film, state, true);
+        for _ in 1..steps {
+            self.step_renewing(film, state, false);
         }
-        self.step_refreshing(film, state, true)
+        &self.output
     }
 
     /// One dry step (film ≡ 0): today's multi-body practice, for comparison.
