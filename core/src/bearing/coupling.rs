@@ -27,7 +27,7 @@
 use super::film_table::{FilmSum, StepFilms};
 use crate::contact::{RollerLoad, SlicedRoller};
 use crate::film::{ContactInput, Regime};
-use crate::math::{exp, ln, max, min, select};
+use crate::math::{exp, ln, ln_coarse, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step.
 pub const INNER_ITERATIONS: usize = 3;
@@ -87,37 +87,53 @@ pub(crate) struct StoredLaw {
 impl StoredLaw {
     /// The stored law, or `fallback` before the first step.
     fn select_or(&self, fallback: &PowerLaw) -> PowerLaw {
-        PowerLaw {
-            offset_m: select(self.valid, self.law.offset_m, fallback.offset_m),
-            ln_coefficient: select(self.valid, self.law.ln_coefficient, fallback.ln_coefficient),
-            exponent: select(self.valid, self.law.exponent, fallback.exponent),
-        }
+        self.law.select(self.valid, fallback)
     }
 }
 
-/// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach.
+/// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach, kept
+/// as the approach it passes through: Q = Q_ref·((δ − δ_off)/s)^n, so that the elastic
+/// approach at λ = ln Q is s·e^((λ − λ_ref)/n) — one exponential, and no logarithm beyond the
+/// fit's ln Q_ref.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct PowerLaw {
     /// δ_off (m).
     offset_m: f32,
-    /// ln L.
-    ln_coefficient: f32,
+    /// λ_ref = ln Q_ref of the point the law passes through.
+    ln_load_ref: f32,
+    /// s = δ_ref − δ_off at that point (m).
+    span_m: f32,
     /// n.
     exponent: f32,
 }
 
 impl PowerLaw {
-    /// The law through the slices' (Q, K, K') at `approach_m`: K/Q = n/span and
-    /// K'/K = (n − 1)/span give span = 1/(K/Q − K'/K), n = span·K/Q. Straight rollers under the
+    /// A straight roller's law from its first touching slice at tilt ψ: offset the approach at
+    /// which that slice touches, Palmgren's whole-roller coefficient (Q_ref = L at s = 1 m).
+    fn untouched<const S: usize>(roller: &SlicedRoller<S>, tilt_rad: f32) -> Self {
+        Self {
+            offset_m: roller.touch_approach_tilted_m(tilt_rad),
+            ln_load_ref: roller.ln_nominal_coefficient(),
+            span_m: 1.0,
+            exponent: 10.0 / 9.0,
+        }
+    }
+
+    /// `self` if `condition`, else `other`, field by field without a branch.
+    fn select(&self, condition: bool, other: &Self) -> Self {
+        Self {
+            offset_m: select(condition, self.offset_m, other.offset_m),
+            ln_load_ref: select(condition, self.ln_load_ref, other.ln_load_ref),
+            span_m: select(condition, self.span_m, other.span_m),
+            exponent: select(condition, self.exponent, other.exponent),
+        }
+    }
+
+    /// The law through the slices' (Q, K, K') at `approach_m`: K/Q = n/s and
+    /// K'/K = (n − 1)/s give s = 1/(K/Q − K'/K), n = s·K/Q. Straight rollers under the
     /// Palmgren law give n = 10/9 exactly; crowned or tilted ones, whose loaded length grows
-    /// with the approach, a larger n. An unloaded roller takes the straight roller's law from
-    /// its first touching slice.
-    fn fit<const S: usize>(
-        roller: &SlicedRoller<S>,
-        load: &RollerLoad,
-        approach_m: f32,
-        tilt_rad: f32,
-    ) -> Self {
+    /// with the approach, a larger n. An unloaded roller takes `untouched`.
+    fn fit(load: &RollerLoad, approach_m: f32, untouched: &Self) -> Self {
         // Both branches are computed and selected (see `math::select`): fixed work.
         let q = load.load_n;
         let k = load.stiffness_n_per_m;
@@ -129,25 +145,18 @@ impl PowerLaw {
             0.0,
         );
         let curvature_fit = fit & (rho1 - rho2 > 0.0);
-        let span = select(
+        let span_m = select(
             curvature_fit,
             1.0 / max(rho1 - rho2, 1.0e-30),
             (10.0 / 9.0) / rho1,
         );
-        let exponent = select(curvature_fit, min(max(span * rho1, 1.0), 4.0), 10.0 / 9.0);
-        Self {
-            offset_m: select(
-                fit,
-                approach_m - span,
-                roller.touch_approach_tilted_m(tilt_rad),
-            ),
-            ln_coefficient: select(
-                fit,
-                ln(max(q, FIT_MIN_N)) - exponent * ln(span),
-                roller.ln_nominal_coefficient(),
-            ),
-            exponent,
-        }
+        let fitted = Self {
+            offset_m: approach_m - span_m,
+            ln_load_ref: ln(max(q, FIT_MIN_N)),
+            span_m,
+            exponent: select(curvature_fit, min(max(span_m * rho1, 1.0), 4.0), 10.0 / 9.0),
+        };
+        fitted.select(fit, untouched)
     }
 }
 
@@ -161,33 +170,31 @@ struct Solved {
     film_slope_m: f32,
 }
 
-/// Solve δ_off + (Q/L)^(1/n) = δ_geo + H(Q) for λ = ln Q by `iterations` safeguarded Newton
-/// steps from `start`, in the log form Φ(λ) = ln D − ln H with D = δ_off − δ_geo + (Q/L)^(1/n)
-/// the elastic approach still missing. Both sides are close to linear in λ (EHL: ln H ≈ −0.1λ,
-/// hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges in a few steps from
-/// anywhere in the bracket; Φ' > 0 throughout. The dry load (film ≡ 0) bounds the root from
-/// below: the film only adds approach. The film sum at the returned λ is the last evaluation
-/// continued by its tangent (second-order accurate, and free).
+/// Solve δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by `iterations` safeguarded
+/// Newton steps from `start`, in the log form Φ(λ) = ln D − ln H with D = δ_off − δ_geo +
+/// s·e^((λ − λ_ref)/n) the elastic approach still missing. Both sides are close to linear in λ
+/// (EHL: ln H ≈ −0.1λ, hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges
+/// in a few steps from anywhere in the bracket; Φ' > 0 throughout. The bracket starts at
+/// `lower_bound` (a load the root is known to exceed). Φ is evaluated by
+/// [`ln_coarse`](crate::math::ln_coarse), which keeps the root and costs a third of `ln`. The
+/// film sum at the returned λ is the last evaluation continued by its tangent (second-order
+/// accurate, and free).
 fn solve_load(
     law: &PowerLaw,
     films: &StepFilms<'_>,
     geometric_approach_m: f32,
     start: f32,
+    lower_bound: f32,
     iterations: usize,
 ) -> Solved {
     let gap = geometric_approach_m - law.offset_m;
     let inverse_exponent = 1.0 / law.exponent;
-    let ln_dry = law.ln_coefficient + law.exponent * ln(max(gap, 1.0e-30));
-    let mut lo = select(gap > 0.0, max(ln_dry, LN_LOAD_MIN), LN_LOAD_MIN);
-    let mut hi = max(LN_LOAD_MAX, lo);
-    let mut lam = if (start > lo) & (start < hi) {
-        start
-    } else {
-        lo + 0.5
-    };
+    let mut lo = max(lower_bound, LN_LOAD_MIN);
+    let mut hi = LN_LOAD_MAX;
+    let mut lam = select((start > lo) & (start < hi), start, lo + 0.5);
     let mut last = (lam, 0.0, 0.0);
     for _ in 0..iterations {
-        let elastic = exp(inverse_exponent * (lam - law.ln_coefficient));
+        let elastic = law.span_m * exp(inverse_exponent * (lam - law.ln_load_ref));
         let f = films.sum_at(lam);
         let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
         last = (lam, f.total_m, dh);
@@ -195,9 +202,9 @@ fn solve_load(
         let defined = missing > 0.0;
         // The floor by a bit-mask select, not `max`: with `max` LLVM emitted a branch to a copy
         // of the loop body specialised for a floored `missing` (a roller whose approach stays
-        // short of the law's offset), and such steps cost 5 instructions more on the M4.
+        // short of the law's offset), and such steps cost more on the M4.
         let missing_floored = select(missing > 1.0e-30, missing, 1.0e-30);
-        let residual = select(defined, ln(missing_floored / h), -1.0);
+        let residual = select(defined, ln_coarse(missing_floored / h), -1.0);
         let slope = inverse_exponent * elastic / missing_floored - dh / h;
         let above = residual > 0.0;
         // Plain values on both sides: a conditional move, no branch.
@@ -232,13 +239,18 @@ pub(crate) fn solve_roller<const S: usize>(
     // 1. Solve with last step's summary of the slices (or, first time, a straight roller's
     //    law from its first touching slice).
     // (Both computed and selected, so the first step costs what every step costs.)
-    let untouched = PowerLaw::fit(roller, &RollerLoad::default(), 0.0, tilt_rad);
+    let untouched = PowerLaw::untouched(roller, tilt_rad);
     let law0 = memory.law.select_or(&untouched);
+    // The dry load bounds the root from below (the film only adds approach); a warm start
+    // below it (the approach grew by more than the film) starts just above it instead.
+    let gap = geometric_approach_m - law0.offset_m;
+    let ln_dry = law0.ln_load_ref + law0.exponent * ln(max(gap, 1.0e-30) / law0.span_m);
     let solved1 = solve_load(
         &law0,
         films,
         geometric_approach_m,
         memory.ln_load,
+        select(gap > 0.0, ln_dry, LN_LOAD_MIN),
         INNER_ITERATIONS,
     );
     let approach1 = geometric_approach_m + solved1.film_m;
@@ -247,12 +259,15 @@ pub(crate) fn solve_roller<const S: usize>(
     //    slices in load, stiffness and curvature at `approach1`, so the remaining error is third
     //    order in the step from `approach1`; load and moment follow the law.
     let r1 = roller.evaluate(approach1, tilt_rad);
-    let law1 = PowerLaw::fit(roller, &r1, approach1, tilt_rad);
+    let law1 = PowerLaw::fit(&r1, approach1, &untouched);
+    // From the slices' load where they carry one, else from the first solve.
+    let start = select(r1.load_n > FIT_MIN_N, law1.ln_load_ref, solved1.ln_load);
     let solved2 = solve_load(
         &law1,
         films,
         geometric_approach_m,
-        ln(max(r1.load_n, 1.0e-4)),
+        start,
+        LN_LOAD_MIN,
         REFINE_ITERATIONS,
     );
     let approach_m = geometric_approach_m + solved2.film_m;

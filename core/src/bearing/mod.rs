@@ -112,10 +112,8 @@ const DEFAULT_LOAD_SPAN: (f32, f32) = (core::f32::consts::LN_10, 8.006_368);
 pub struct Bearing<const Z: usize, const S: usize> {
     params: BearingParams,
     roller: SlicedRoller<S>,
-    /// cos and sin of 2πj/Z, the roller positions relative to the cage.
-    pitch: [(f32, f32); Z],
-    /// 2πj/Z (rad).
-    pitch_angle_rad: [f32; Z],
+    /// cos and sin of 2πj/Z, the roller positions relative to the cage, and 2πj/Z (rad).
+    pitch: [(f32, f32, f32); Z],
     /// What each roller carries to the next step: the warm start.
     memory: [RollerMemory; Z],
     /// ln Q of the lightest and heaviest loaded roller at the last step: where the next step
@@ -152,17 +150,15 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 },
             });
         }
-        let mut pitch = [(0.0, 1.0); Z];
-        let mut pitch_angle_rad = [0.0; Z];
-        for (j, (p, a)) in pitch.iter_mut().zip(pitch_angle_rad.iter_mut()).enumerate() {
-            *a = 2.0 * core::f32::consts::PI * j as f32 / Z as f32;
-            *p = (libm::cosf(*a), libm::sinf(*a));
+        let mut pitch = [(1.0, 0.0, 0.0); Z];
+        for (j, p) in pitch.iter_mut().enumerate() {
+            let a = 2.0 * core::f32::consts::PI * j as f32 / Z as f32;
+            *p = (libm::cosf(a), libm::sinf(a), a);
         }
         Ok(Self {
             roller: SlicedRoller::new(&params.geometry, params.reduced_modulus_pa, params.law),
             params,
             pitch,
-            pitch_angle_rad,
             memory: [RollerMemory::default(); Z],
             load_span: DEFAULT_LOAD_SPAN,
             table: FilmTable::default(),
@@ -272,61 +268,56 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             standstill(film.served_loads(&templates[1])),
         ];
         let martin = [inner.martin, outer.martin];
-        let load_span = self.load_span;
-        // The table moves out of `self` for the step (a copy the optimiser elides), so the
-        // rollers' closure below may borrow the bearing mutably.
-        let mut table = self.table;
-        let films = table.step(film, templates, martin, load_span, renew_all);
+        let films = self
+            .table
+            .step(film, templates, martin, self.load_span, renew_all);
         self.table_stale = false;
         let ln_m_offsets = [inner.ln_m_offset, outer.ln_m_offset];
         let ln_l = [inner.ln_l, outer.ln_l];
         let mut span = (f32::MAX, f32::MIN);
-        self.assemble(state, |bearing, j, geometric, tilt| {
-            let mut memory = bearing.memory.get(j).copied().unwrap_or_default();
-            let r = solve_roller(
-                &bearing.roller,
-                &films,
-                ln_m_offsets,
-                ln_l,
-                geometric,
-                tilt,
-                &mut memory,
-            );
-            if let Some(m) = bearing.memory.get_mut(j) {
-                *m = memory;
-            }
-            let loaded = r.load.load_n >= 1.0;
-            span = (
-                crate::math::select(loaded, crate::math::min(span.0, r.ln_load), span.0),
-                crate::math::select(loaded, crate::math::max(span.1, r.ln_load), span.1),
-            );
-            let [(central_in, min_in), (central_out, min_out)] = r.films;
-            let s0 = r.load.stiffness_n_per_m;
-            let coupling = r.film_slope_m_per_n / (1.0 - s0 * r.film_slope_m_per_n);
-            let shown = |h: f32| crate::math::select(lubricated, h, 0.0);
-            // A table, not an `if`: the work must not depend on the speed.
-            let shown_regime = |r: Regime| {
-                [Regime::Dry, r]
-                    .get(usize::from(lubricated))
-                    .copied()
-                    .unwrap_or(Regime::Dry)
-            };
-            let roller = RollerOutput {
-                approach_m: r.approach_m,
-                central_film_in_m: shown(central_in),
-                central_film_out_m: shown(central_out),
-                min_film_in_m: shown(min_in),
-                min_film_out_m: shown(min_out),
-                roller_stiffness_n_per_m: s0 / (1.0 - s0 * r.film_slope_m_per_n),
-                regime_in: shown_regime(r.regimes[0]),
-                regime_out: shown_regime(r.regimes[1]),
-                film_source_in: served[0].source_at(r.ln_load),
-                film_source_out: served[1].source_at(r.ln_load),
-                ..RollerOutput::ZERO
-            };
-            (r.load, roller, coupling)
-        });
-        self.table = table;
+        let parts = Parts {
+            params: &self.params,
+            roller: &self.roller,
+            pitch: &self.pitch,
+        };
+        parts.assemble(
+            &mut self.memory,
+            &mut self.output,
+            state,
+            |roller, memory, geometric, tilt| {
+                let r = solve_roller(roller, &films, ln_m_offsets, ln_l, geometric, tilt, memory);
+                let loaded = r.load.load_n >= 1.0;
+                span = (
+                    crate::math::select(loaded, crate::math::min(span.0, r.ln_load), span.0),
+                    crate::math::select(loaded, crate::math::max(span.1, r.ln_load), span.1),
+                );
+                let [(central_in, min_in), (central_out, min_out)] = r.films;
+                let s0 = r.load.stiffness_n_per_m;
+                let coupling = r.film_slope_m_per_n / (1.0 - s0 * r.film_slope_m_per_n);
+                let shown = |h: f32| crate::math::select(lubricated, h, 0.0);
+                // A table, not an `if`: the work must not depend on the speed.
+                let shown_regime = |r: Regime| {
+                    [Regime::Dry, r]
+                        .get(usize::from(lubricated))
+                        .copied()
+                        .unwrap_or(Regime::Dry)
+                };
+                let roller = RollerOutput {
+                    approach_m: r.approach_m,
+                    central_film_in_m: shown(central_in),
+                    central_film_out_m: shown(central_out),
+                    min_film_in_m: shown(min_in),
+                    min_film_out_m: shown(min_out),
+                    roller_stiffness_n_per_m: s0 / (1.0 - s0 * r.film_slope_m_per_n),
+                    regime_in: shown_regime(r.regimes[0]),
+                    regime_out: shown_regime(r.regimes[1]),
+                    film_source_in: served[0].source_at(r.ln_load),
+                    film_source_out: served[1].source_at(r.ln_load),
+                    ..RollerOutput::ZERO
+                };
+                (r.load, roller, coupling)
+            },
+        );
         // The loads the next step renews the table at first; unchanged when nothing is loaded.
         if span.0 <= span.1 {
             self.load_span = span;
@@ -357,17 +348,28 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         if let Err(e) = state.check() {
             return self.reject(e);
         }
-        self.assemble(state, |bearing, _, geometric, tilt| {
-            let load = bearing.roller.evaluate(geometric, tilt);
-            let roller = RollerOutput {
-                approach_m: geometric,
-                roller_stiffness_n_per_m: load.stiffness_n_per_m,
-                regime_in: Regime::Dry,
-                regime_out: Regime::Dry,
-                ..RollerOutput::ZERO
-            };
-            (load, roller, 0.0)
-        })
+        let parts = Parts {
+            params: &self.params,
+            roller: &self.roller,
+            pitch: &self.pitch,
+        };
+        parts.assemble(
+            &mut self.memory,
+            &mut self.output,
+            state,
+            |roller, _, geometric, tilt| {
+                let load = roller.evaluate(geometric, tilt);
+                let roller = RollerOutput {
+                    approach_m: geometric,
+                    roller_stiffness_n_per_m: load.stiffness_n_per_m,
+                    regime_in: Regime::Dry,
+                    regime_out: Regime::Dry,
+                    ..RollerOutput::ZERO
+                };
+                (load, roller, 0.0)
+            },
+        );
+        &self.output
     }
 
     fn reject(&mut self, error: ParamError) -> &BearingOutput<Z> {
@@ -375,36 +377,57 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         self.output.status = StepStatus::Rejected(error);
         &self.output
     }
+}
 
+/// The parts of a bearing the roller loop reads, borrowed apart from the warm start and the
+/// output it writes (and from the film table the lubricated step's closure reads).
+struct Parts<'a, const Z: usize, const S: usize> {
+    params: &'a BearingParams,
+    roller: &'a SlicedRoller<S>,
+    pitch: &'a [(f32, f32, f32); Z],
+}
+
+impl<const Z: usize, const S: usize> Parts<'_, Z, S> {
     /// Run `roller_step` for every roller and sum forces, moments, stiffness and damping.
-    /// `roller_step(self, j, geometric approach, tilt)` returns the slice load, the roller's
+    /// `roller_step(roller, its warm start, geometric approach, tilt)` returns the slice load, the roller's
     /// film fields and the film coupling factor of the stiffness (see `StiffnessSums`).
     fn assemble(
-        &mut self,
+        &self,
+        memory: &mut [RollerMemory; Z],
+        out: &mut BearingOutput<Z>,
         state: &OperatingState,
         mut roller_step: impl FnMut(
-            &mut Self,
-            usize,
+            &SlicedRoller<S>,
+            &mut RollerMemory,
             f32,
             f32,
         ) -> (crate::contact::RollerLoad, RollerOutput, f32),
-    ) -> &BearingOutput<Z> {
+    ) {
         let [x, y] = state.displacement_m;
         let [vx, vy] = state.velocity_m_s;
         let [tilt_x, tilt_y] = state.tilt_rad;
         let clearance = self.params.geometry.radial_clearance_m();
         let damping = self.params.damping_factor_s;
         let (sin_c, cos_c) = sin_cos(state.cage_angle_rad);
-        let mut out = BearingOutput::<Z>::ZERO;
+        // Every roller entry is written below; the sums start from zero (in place: the output
+        // is a kilobyte and a half, and a copy of it costs as much as a roller).
+        out.force_n = [0.0; 2];
+        out.moment_nm = [0.0; 2];
+        out.damping_n_s_per_m = [[0.0; 2]; 2];
+        out.status = StepStatus::Ok;
         let mut stiffness = StiffnessSums::default();
-        for j in 0..Z {
-            let (cp, sp) = self.pitch.get(j).copied().unwrap_or((1.0, 0.0));
+        for (&(cp, sp, pitch_angle), (slot, roller_memory)) in self
+            .pitch
+            .iter()
+            .zip(out.rollers.iter_mut().zip(memory.iter_mut()))
+        {
             // Roller direction θ_j = θ_c + 2πj/Z by the angle-sum identities.
             let c = cos_c * cp - sin_c * sp;
             let s = sin_c * cp + cos_c * sp;
             let geometric = x * c + y * s - clearance;
             let tilt = tilt_y * c - tilt_x * s;
-            let (load, mut roller, coupling) = roller_step(self, j, geometric, tilt);
+            let (load, mut roller, coupling) =
+                roller_step(self.roller, roller_memory, geometric, tilt);
             let approach_rate = vx * c + vy * s;
             let damping_force = damping * load.stiffness_n_per_m * approach_rate;
             // A roller pushes, it cannot pull: the total roller force is clamped at zero.
@@ -427,21 +450,15 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             out.damping_n_s_per_m[0][1] += cd * c * s;
             out.damping_n_s_per_m[1][0] += cd * c * s;
             out.damping_n_s_per_m[1][1] += cd * s * s;
-            roller.angle_rad = wrap_angle(
-                state.cage_angle_rad + self.pitch_angle_rad.get(j).copied().unwrap_or(0.0),
-            );
+            roller.angle_rad = wrap_angle(state.cage_angle_rad + pitch_angle);
             roller.geometric_approach_m = geometric;
             roller.load_n = load.load_n;
             roller.damping_force_n = damping_force;
             roller.moment_nm = load.moment_nm;
             roller.contact_stiffness_n_per_m = load.stiffness_n_per_m;
-            if let Some(slot) = out.rollers.get_mut(j) {
-                *slot = roller;
-            }
+            *slot = roller;
         }
         out.stiffness = stiffness.matrix();
-        self.output = out;
-        &self.output
     }
 }
 

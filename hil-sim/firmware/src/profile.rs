@@ -5,6 +5,7 @@
 use crate::counter;
 use crate::host_io::{HostFile, IoError};
 use crate::kernel;
+use bearing_core::film::ann::AnnInt;
 use bearing_core::{math, Bearing, FilmModel, OperatingState, Regression};
 use core::hint::black_box;
 
@@ -40,7 +41,7 @@ pub fn write_profile() -> Result<(), IoError> {
     let contact = params.contact_input(false, 800.0, 2199.0);
     let empty = measure(|| ());
     let x = black_box(2.0f32);
-    let entries: [(&str, u32); 15] = [
+    let entries: [(&str, u32); 18] = [
         (
             "f32::max(2, 1.5) (fmaxf call)",
             measure(|| black_box(x).max(black_box(1.5))),
@@ -65,6 +66,14 @@ pub fn write_profile() -> Result<(), IoError> {
         ("core math::ln", measure(|| math::ln(black_box(x)))),
         ("core math::exp", measure(|| math::exp(black_box(x)))),
         (
+            "core math::ln_coarse",
+            measure(|| math::ln_coarse(black_box(x))),
+        ),
+        (
+            "AnnInt::film, one contact",
+            measure(|| AnnInt.film(black_box(&contact))),
+        ),
+        (
             "core math::pow",
             measure(|| math::pow(black_box(x), black_box(1.11))),
         ),
@@ -87,6 +96,10 @@ pub fn write_profile() -> Result<(), IoError> {
         (
             "Bearing::step regression, 17 rollers",
             measure(|| bearing.step(&Regression, black_box(&state)).force_n),
+        ),
+        (
+            "Bearing::step int network, 17 rollers",
+            measure(|| bearing.step(&AnnInt, black_box(&state)).force_n),
         ),
         ("measurement overhead (subtracted)", empty),
     ];
