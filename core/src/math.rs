@@ -142,6 +142,14 @@ pub fn pow(x: f32, y: f32) -> f32 {
 pub fn pow_10_9(x: f32) -> f32 {
     let positive = x > 0.0;
     let x = if positive { min(x, 1.0) } else { 1.0 };
+    // Masked by a multiplication: the root stays in the data flow (see `select`).
+    pow_10_9_in_range(x) * if positive { 1.0 } else { 0.0 }
+}
+
+/// [`pow_10_9`] for `x` already known to lie in (0, 1] (a slice loop that clamps its approach
+/// once for all its uses).
+#[inline]
+pub fn pow_10_9_in_range(x: f32) -> f32 {
     const BIAS: i32 = 127 << 23;
     // Found by a scan of the worst relative error over 10⁻¹³ … 1 (fast-inverse-square-root
     // style); without it the first guess is off by up to 6 %.
@@ -153,9 +161,7 @@ pub fn pow_10_9(x: f32) -> f32 {
         let y8 = y4 * y4;
         y * (8.0 / 9.0) + x / (9.0 * y8)
     };
-    let root = newton(newton(newton(guess)));
-    // Masked by a multiplication: the root stays in the data flow (see `select`).
-    x * root * if positive { 1.0 } else { 0.0 }
+    x * newton(newton(newton(guess)))
 }
 
 /// Sine and cosine of `x` (rad) at a fixed cost. Accurate to a few ulp for |x| ≲ 10⁴ (wrap

@@ -30,9 +30,9 @@ use crate::film::{ContactInput, Regime};
 use crate::math::{exp, ln, ln_coarse, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step.
-pub const INNER_ITERATIONS: usize = 3;
-/// Newton steps of the re-solve after the second slice pass.
-pub const REFINE_ITERATIONS: usize = 2;
+pub const NEWTON_ITERATIONS: usize = 2;
+/// ln Q above the dry load where a roller's first solve starts.
+const COLD_START_OFFSET: f32 = 0.1;
 
 /// Bracket of the roller load in the scalar solve (N): 10⁻⁴ N … 10⁷ N.
 const LN_LOAD_MIN: f32 = -9.210_34;
@@ -71,24 +71,18 @@ pub(crate) struct CoupledRoller {
 /// What a roller carries from one step to the next: the warm start.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct RollerMemory {
-    /// Power law fitted to the slices at the last step (meaningless before the first step).
-    pub law: StoredLaw,
     /// ln Q at the last step.
     pub ln_load: f32,
-}
-
-/// A power law that may not exist yet, chosen without a branch.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct StoredLaw {
-    law: PowerLaw,
-    valid: bool,
-}
-
-impl StoredLaw {
-    /// The stored law, or `fallback` before the first step.
-    fn select_or(&self, fallback: &PowerLaw) -> PowerLaw {
-        self.law.select(self.valid, fallback)
-    }
+    /// Film sum H at the last step (m); 0 before the first.
+    pub film_m: f32,
+    /// Geometric approach at the last step (m).
+    pub geometric_approach_m: f32,
+    /// dH/dδ_geo at the last step: how the film followed the geometric approach (−1 … 0).
+    pub film_sensitivity: f32,
+    /// The power law fitted to the slices at the last step.
+    pub law: PowerLaw,
+    /// A step has been solved since the bearing was made or reset.
+    pub solved: bool,
 }
 
 /// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach, kept
@@ -110,7 +104,7 @@ pub(crate) struct PowerLaw {
 impl PowerLaw {
     /// A straight roller's law from its first touching slice at tilt ψ: offset the approach at
     /// which that slice touches, Palmgren's whole-roller coefficient (Q_ref = L at s = 1 m).
-    fn untouched<const S: usize>(roller: &SlicedRoller<S>, tilt_rad: f32) -> Self {
+    pub(crate) fn untouched<const S: usize>(roller: &SlicedRoller<S>, tilt_rad: f32) -> Self {
         Self {
             offset_m: roller.touch_approach_tilted_m(tilt_rad),
             ln_load_ref: roller.ln_nominal_coefficient(),
@@ -168,6 +162,8 @@ struct Solved {
     film_m: f32,
     /// dH/dλ at the last evaluation (m).
     film_slope_m: f32,
+    /// dδ/dλ of the elastic approach at the last evaluation (m).
+    elastic_slope_m: f32,
 }
 
 /// Solve δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by `iterations` safeguarded
@@ -192,12 +188,12 @@ fn solve_load(
     let mut lo = max(lower_bound, LN_LOAD_MIN);
     let mut hi = LN_LOAD_MAX;
     let mut lam = select((start > lo) & (start < hi), start, lo + 0.5);
-    let mut last = (lam, 0.0, 0.0);
+    let mut last = (lam, 0.0, 0.0, 0.0);
     for _ in 0..iterations {
         let elastic = law.span_m * exp(inverse_exponent * (lam - law.ln_load_ref));
         let f = films.sum_at(lam);
         let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
-        last = (lam, f.total_m, dh);
+        last = (lam, f.total_m, dh, inverse_exponent * elastic);
         let missing = elastic - gap;
         let defined = missing > 0.0;
         // The floor by a bit-mask select, not `max`: with `max` LLVM emitted a branch to a copy
@@ -217,11 +213,12 @@ fn solve_load(
             0.5 * (lo + hi),
         );
     }
-    let (at, film_m, film_slope_m) = last;
+    let (at, film_m, film_slope_m, elastic_slope_m) = last;
     Solved {
         ln_load: lam,
         film_m: max(film_m + film_slope_m * (lam - at), 0.0),
         film_slope_m,
+        elastic_slope_m,
     }
 }
 
@@ -236,39 +233,38 @@ pub(crate) fn solve_roller<const S: usize>(
     tilt_rad: f32,
     memory: &mut RollerMemory,
 ) -> CoupledRoller {
-    // 1. Solve with last step's summary of the slices (or, first time, a straight roller's
-    //    law from its first touching slice).
-    // (Both computed and selected, so the first step costs what every step costs.)
-    let untouched = PowerLaw::untouched(roller, tilt_rad);
-    let law0 = memory.law.select_or(&untouched);
-    // The dry load bounds the root from below (the film only adds approach); a warm start
-    // below it (the approach grew by more than the film) starts just above it instead.
-    let gap = geometric_approach_m - law0.offset_m;
-    let ln_dry = law0.ln_load_ref + law0.exponent * ln(max(gap, 1.0e-30) / law0.span_m);
-    let solved1 = solve_load(
-        &law0,
-        films,
-        geometric_approach_m,
-        memory.ln_load,
-        select(gap > 0.0, ln_dry, LN_LOAD_MIN),
-        INNER_ITERATIONS,
+    // 1. The one slice pass, at the approach the last step's film predicts: the film changes
+    //    little from step to step (EHL: ∝ Q^−0.1), and what it does change moves the approach
+    //    by a fraction of the film.
+    //    The film's change is predicted to first order from its sensitivity at the last step.
+    let predicted_film = max(
+        memory.film_m
+            + memory.film_sensitivity * (geometric_approach_m - memory.geometric_approach_m),
+        0.0,
     );
-    let approach1 = geometric_approach_m + solved1.film_m;
-
-    // 2. The one slice pass, a fresh power law there and a short re-solve. The law matches the
-    //    slices in load, stiffness and curvature at `approach1`, so the remaining error is third
-    //    order in the step from `approach1`; load and moment follow the law.
+    let approach1 = geometric_approach_m + predicted_film;
     let r1 = roller.evaluate(approach1, tilt_rad);
-    let law1 = PowerLaw::fit(&r1, approach1, &untouched);
-    // From the slices' load where they carry one, else from the first solve.
-    let start = select(r1.load_n > FIT_MIN_N, law1.ln_load_ref, solved1.ln_load);
+    // 2. A whole-roller power law through the slices there (matching load, stiffness and
+    //    curvature: its error is third order in the approach's step from `approach1`), and the
+    //    film–load equation on it. Load and moment follow the law.
+    //    Where the slices carry nothing at `approach1` (a light roller whose film was
+    //    over-predicted), the last step's law stands in; before the first step, a straight
+    //    roller's law from its first touching slice.
+    let untouched = PowerLaw::untouched(roller, tilt_rad);
+    let fallback = memory.law.select(memory.solved, &untouched);
+    let law1 = PowerLaw::fit(&r1, approach1, &fallback);
+    // From the slices' load where they carry one, else from the last step's; before the first
+    // step (no film predicted, so the slices' load is the dry one, where the missing approach
+    // is zero) a little above it.
+    let start = select(r1.load_n > FIT_MIN_N, law1.ln_load_ref, memory.ln_load)
+        + select(memory.solved, 0.0, COLD_START_OFFSET);
     let solved2 = solve_load(
         &law1,
         films,
         geometric_approach_m,
         start,
         LN_LOAD_MIN,
-        REFINE_ITERATIONS,
+        NEWTON_ITERATIONS,
     );
     let approach_m = geometric_approach_m + solved2.film_m;
     let ln_load = solved2.ln_load;
@@ -278,12 +274,16 @@ pub(crate) fn solve_roller<const S: usize>(
     // short of the law's offset (no film, separated) carries nothing.
     load.load_n = select(approach_m > law1.offset_m, load_n, 0.0);
     load.moment_nm += load.stiffness_moment_n * (approach_m - approach1);
+    // At the root, dE/dλ·dλ = dδ_geo + dH/dλ·dλ: dH/dδ_geo = H'/(E' − H').
+    let film_sensitivity = solved2.film_slope_m
+        / max(solved2.elastic_slope_m - solved2.film_slope_m, 1.0e-30);
     *memory = RollerMemory {
-        law: StoredLaw {
-            law: law1,
-            valid: true,
-        },
         ln_load,
+        film_m: solved2.film_m,
+        geometric_approach_m,
+        film_sensitivity: min(max(film_sensitivity, -1.0), 0.0),
+        law: law1,
+        solved: true,
     };
 
     let sum = FilmSum {

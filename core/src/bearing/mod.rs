@@ -12,7 +12,7 @@ mod equilibrium;
 mod film_table;
 mod output;
 
-pub use coupling::{INNER_ITERATIONS, REFINE_ITERATIONS};
+pub use coupling::NEWTON_ITERATIONS;
 pub use equilibrium::Equilibrium;
 pub use film_table::{REFRESHES_PER_STEP, SPEED_EXPONENT, TABLE_NODES, TABLE_STEP};
 pub use output::{BearingOutput, RollerOutput, StepStatus};

@@ -25,7 +25,7 @@ use crate::math::{exp, ln, min, pow, pow_10_9};
 pub const PALMGREN_K: f32 = 2.5775;
 
 /// Largest approach the laws are evaluated at (m).
-const MAX_APPROACH_M: f32 = 1.0e-2; // also keeps `pow_10_9` in its range
+pub(crate) const MAX_APPROACH_M: f32 = 1.0e-2; // also keeps `pow_10_9` in its range
 
 /// Newton steps used to invert the Lundberg law (from a Palmgren start; converged to f32).
 const LUNDBERG_NEWTON_STEPS: usize = 4;
@@ -73,6 +73,11 @@ impl BoundLaw {
                 * reduced_modulus_pa
                 * crate::math::sqrt(inner_radius_m * outer_radius_m)),
         }
+    }
+
+    /// The law.
+    pub(crate) fn kind(&self) -> ContactLaw {
+        self.law
     }
 
     /// Palmgren coefficient c_w of w = c_w·δ^(10/9) (also a good start for Lundberg).

@@ -5,8 +5,8 @@
 //! the raceway (tan ψ ≈ ψ: below 3·10⁻⁵ relative error for |ψ| ≤ 0.01 rad) and P the crown drop
 //! (on both contacts, hence 2P). Only slices with δ_k > 0 carry load.
 
-use super::law::{BoundLaw, ContactLaw};
-use crate::math::max;
+use super::law::{BoundLaw, ContactLaw, MAX_APPROACH_M};
+use crate::math::{max, min, pow_10_9_in_range};
 use crate::params::BearingGeometry;
 
 /// Load state of one roller, with the slice sums the stiffness matrix needs.
@@ -119,6 +119,51 @@ impl<const S: usize> SlicedRoller<S> {
     /// Every slice is evaluated whatever the input, so the cost is fixed.
     #[inline]
     pub fn evaluate(&self, approach_m: f32, tilt_rad: f32) -> RollerLoad {
+        match self.law.kind() {
+            ContactLaw::Palmgren => self.evaluate_palmgren(approach_m, tilt_rad),
+            ContactLaw::Lundberg => self.evaluate_any(approach_m, tilt_rad),
+        }
+    }
+
+    /// [`SlicedRoller::evaluate`] under the Palmgren law w = c·δ^(10/9), with its derivatives
+    /// (10/9)·w/δ and (10/81)·w/δ²: the slice sums are taken of w, w/δ and w/δ², and the
+    /// constants (c, the slice length, 10/9, 10/81) applied once to the sums — the real-time
+    /// step's slice pass, a third cheaper than the general loop.
+    #[inline]
+    fn evaluate_palmgren(&self, approach_m: f32, tilt_rad: f32) -> RollerLoad {
+        let mut sums = [0.0f32; 6];
+        for (&x, &c) in self.positions_m.iter().zip(self.crown_offsets_m.iter()) {
+            let d = approach_m + x * tilt_rad + c;
+            let positive = d > 0.0;
+            // Cheap operands: conditional moves; the mask keeps the power in the data flow.
+            let d = if positive { min(d, MAX_APPROACH_M) } else { 1.0e-12 };
+            let mask = if positive { 1.0 } else { 0.0 };
+            let w = pow_10_9_in_range(d) * mask;
+            let w_per_d = w / d;
+            let [sw, swx, sk, skx, skxx, sk2] = &mut sums;
+            *sw += w;
+            *swx += w * x;
+            *sk += w_per_d;
+            *skx += w_per_d * x;
+            *skxx += w_per_d * x * x;
+            *sk2 += w_per_d / d;
+        }
+        let [sw, swx, sk, skx, skxx, sk2] = sums;
+        let scale = self.law.palmgren_coefficient() * self.slice_length_m;
+        let k_scale = (10.0 / 9.0) * scale;
+        RollerLoad {
+            load_n: sw * scale,
+            moment_nm: swx * scale,
+            stiffness_n_per_m: sk * k_scale,
+            stiffness_moment_n: skx * k_scale,
+            stiffness_tilt_nm: skxx * k_scale,
+            stiffness_derivative_n_per_m2: sk2 * ((10.0 / 81.0) * scale),
+        }
+    }
+
+    /// [`SlicedRoller::evaluate`] for any law, slice by slice.
+    #[inline]
+    fn evaluate_any(&self, approach_m: f32, tilt_rad: f32) -> RollerLoad {
         let mut out = RollerLoad::default();
         for (&x, &c) in self.positions_m.iter().zip(self.crown_offsets_m.iter()) {
             let (w, dw, d2w) = self.law.load_per_length(approach_m + x * tilt_rad + c);
