@@ -80,25 +80,6 @@ pub fn log2(x: f32) -> f32 {
     e + t * horner(&LOG2_POLY, t)
 }
 
-/// log₂(1 + t)/t for t ∈ [√½ − 1, √2 − 1], degree 3: |error of t·P(t)| < 1.8·10⁻⁴.
-const LOG2_POLY_COARSE: [f32; 4] = [1.442_261_1, -0.724_193_4, 0.511_574_4, -0.329_120_8];
-
-/// Natural logarithm to 1.3·10⁻⁴ (absolute), exactly 0 at 1, for the residual of a Newton
-/// iteration (whose root it keeps exactly and whose convergence it slows by a factor 3·10⁻⁴
-/// per step) at a third of [`ln`]'s cost. Inputs as for [`log2`].
-#[inline]
-pub fn ln_coarse(x: f32) -> f32 {
-    let x = min(max(x, f32::MIN_POSITIVE), f32::MAX);
-    let bits = x.to_bits();
-    let exponent = ((bits >> 23) & 0xff) as i32 - 127;
-    let mantissa = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
-    let high = mantissa > SQRT_2;
-    let m = if high { mantissa * 0.5 } else { mantissa };
-    let e = (exponent + i32::from(high)) as f32;
-    let t = m - 1.0;
-    (e + t * horner(&LOG2_POLY_COARSE, t)) * core::f32::consts::LN_2
-}
-
 /// Natural logarithm with the behaviour of [`log2`].
 #[inline]
 pub fn ln(x: f32) -> f32 {
@@ -334,17 +315,6 @@ mod tests {
             y += 0.0917;
         }
         assert!(worst < 5.0e-7, "worst exp2 error {worst}");
-    }
-
-    #[test]
-    fn ln_coarse_is_within_its_bound_and_exact_at_one() {
-        assert_eq!(ln_coarse(1.0), 0.0);
-        let mut worst = 0.0f64;
-        for i in 0..20_000 {
-            let x = 10f64.powf(-6.0 + 12.0 * i as f64 / 20_000.0);
-            worst = worst.max((ln_coarse(x as f32) as f64 - (x as f32 as f64).ln()).abs());
-        }
-        assert!(worst < 1.3e-4, "{worst}");
     }
 
     #[test]

@@ -27,7 +27,7 @@
 use super::film_table::{FilmSum, StepFilms};
 use crate::contact::{RollerLoad, SlicedRoller};
 use crate::film::{ContactInput, Regime};
-use crate::math::{exp, ln, ln_coarse, max, min, select};
+use crate::math::{exp, ln, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step.
 pub const NEWTON_ITERATIONS: usize = 2;
@@ -167,14 +167,15 @@ struct Solved {
 }
 
 /// Solve δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by `iterations` safeguarded
-/// Newton steps from `start`, in the log form Φ(λ) = ln D − ln H with D = δ_off − δ_geo +
-/// s·e^((λ − λ_ref)/n) the elastic approach still missing. Both sides are close to linear in λ
-/// (EHL: ln H ≈ −0.1λ, hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges
-/// in a few steps from anywhere in the bracket; Φ' > 0 throughout. The bracket starts at
-/// `lower_bound` (a load the root is known to exceed). Φ is evaluated by
-/// [`ln_coarse`](crate::math::ln_coarse), which keeps the root and costs a third of `ln`. The
-/// film sum at the returned λ is the last evaluation continued by its tangent (second-order
-/// accurate, and free).
+/// Newton steps from `start`, on g(λ) = 2(D − H)/(D + H) with D = δ_off − δ_geo +
+/// s·e^((λ − λ_ref)/n) the elastic approach still missing. g is the (2,2)-Padé form of
+/// Φ = ln D − ln H: both sides of Φ are close to linear in λ (EHL: ln H ≈ −0.1λ,
+/// hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), g has Φ's root and slope there and is
+/// within a third-order term of it nearby — Newton from the step's predicted start converges
+/// as on Φ, at the cost of a division instead of a logarithm — and g is monotone (D rises
+/// with λ, H falls), so the bracket kept from `lower_bound` catches the steps a saturated g
+/// (far from the root, |g| → 2) would overshoot with. The film sum at the returned λ is the
+/// last evaluation continued by its tangent (second-order accurate, and free).
 fn solve_load(
     law: &PowerLaw,
     films: &StepFilms<'_>,
@@ -200,8 +201,12 @@ fn solve_load(
         // of the loop body specialised for a floored `missing` (a roller whose approach stays
         // short of the law's offset), and such steps cost more on the M4.
         let missing_floored = select(missing > 1.0e-30, missing, 1.0e-30);
-        let residual = select(defined, ln_coarse(missing_floored / h), -1.0);
-        let slope = inverse_exponent * elastic / missing_floored - dh / h;
+        // g = 2(D − H)/(D + H), the (2,2)-Padé form of ln(D/H): the same root and slope
+        // there, third-order close to it, monotone, at the cost of a division.
+        let sum = missing_floored + h;
+        let residual = 2.0 * (missing_floored - h) / sum;
+        let elastic_slope = inverse_exponent * elastic;
+        let slope = 4.0 * (elastic_slope * h - missing_floored * dh) / (sum * sum);
         let above = residual > 0.0;
         // Plain values on both sides: a conditional move, no branch.
         hi = if above { lam } else { hi };
@@ -275,8 +280,8 @@ pub(crate) fn solve_roller<const S: usize>(
     load.load_n = select(approach_m > law1.offset_m, load_n, 0.0);
     load.moment_nm += load.stiffness_moment_n * (approach_m - approach1);
     // At the root, dE/dλ·dλ = dδ_geo + dH/dλ·dλ: dH/dδ_geo = H'/(E' − H').
-    let film_sensitivity = solved2.film_slope_m
-        / max(solved2.elastic_slope_m - solved2.film_slope_m, 1.0e-30);
+    let film_sensitivity =
+        solved2.film_slope_m / max(solved2.elastic_slope_m - solved2.film_slope_m, 1.0e-30);
     *memory = RollerMemory {
         ln_load,
         film_m: solved2.film_m,

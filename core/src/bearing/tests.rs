@@ -468,4 +468,3 @@ fn rollers_outside_the_served_loads_are_flagged_as_fallback() {
         .iter()
         .all(|r| r.film_source_in == FilmSource::None));
 }
-

@@ -136,7 +136,11 @@ impl<const S: usize> SlicedRoller<S> {
             let d = approach_m + x * tilt_rad + c;
             let positive = d > 0.0;
             // Cheap operands: conditional moves; the mask keeps the power in the data flow.
-            let d = if positive { min(d, MAX_APPROACH_M) } else { 1.0e-12 };
+            let d = if positive {
+                min(d, MAX_APPROACH_M)
+            } else {
+                1.0e-12
+            };
             let mask = if positive { 1.0 } else { 0.0 };
             let w = pow_10_9_in_range(d) * mask;
             let w_per_d = w / d;

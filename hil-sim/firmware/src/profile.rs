@@ -41,7 +41,7 @@ pub fn write_profile() -> Result<(), IoError> {
     let contact = params.contact_input(false, 800.0, 2199.0);
     let empty = measure(|| ());
     let x = black_box(2.0f32);
-    let entries: [(&str, u32); 18] = [
+    let entries: [(&str, u32); 17] = [
         (
             "f32::max(2, 1.5) (fmaxf call)",
             measure(|| black_box(x).max(black_box(1.5))),
@@ -65,10 +65,6 @@ pub fn write_profile() -> Result<(), IoError> {
         ),
         ("core math::ln", measure(|| math::ln(black_box(x)))),
         ("core math::exp", measure(|| math::exp(black_box(x)))),
-        (
-            "core math::ln_coarse",
-            measure(|| math::ln_coarse(black_box(x))),
-        ),
         (
             "AnnInt::film, one contact",
             measure(|| AnnInt.film(black_box(&contact))),
