@@ -243,3 +243,39 @@ fn film_lists_the_numerical_solution_and_the_networks_with_their_fallback() {
         assert_eq!(m["fell_back"], true, "{m}");
     }
 }
+
+#[test]
+fn film_plot_draws_a_png_and_refuses_a_bad_span() {
+    let dir = std::env::temp_dir().join(format!("bearing-film-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let png = dir.join("film.png");
+    let cfg = config("hub_motor.toml");
+    let png_arg = png.to_str().unwrap();
+    let common = [
+        "film",
+        "--config",
+        cfg.as_str(),
+        "--speed-rpm",
+        "21000",
+        "--roller-load",
+        "800",
+        "--plot",
+        png_arg,
+        "--plot-points",
+        "5",
+    ];
+    let (ok, stdout, stderr) = bearing(&common);
+    assert!(ok, "{stderr}");
+    assert!(stdout.contains("plot:"), "{stdout}");
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(
+        bytes.len() > 10_000 && bytes.starts_with(b"\x89PNG"),
+        "{} bytes",
+        bytes.len()
+    );
+    let mut bad = common.to_vec();
+    bad.extend(["--plot-span", "0.5"]);
+    let (ok, _, stderr) = bearing(&bad);
+    assert!(!ok && stderr.contains("--plot-span"), "{stderr}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -30,7 +30,7 @@ use crate::film::{ContactInput, Regime};
 use crate::math::{exp, ln, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step.
-pub const NEWTON_ITERATIONS: usize = 2;
+pub const NEWTON_ITERATIONS: usize = 3;
 /// ln Q above the dry load where a roller's first solve starts.
 const COLD_START_OFFSET: f32 = 0.1;
 
@@ -167,15 +167,14 @@ struct Solved {
 }
 
 /// Solve δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by `iterations` safeguarded
-/// Newton steps from `start`, on g(λ) = 2(D − H)/(D + H) with D = δ_off − δ_geo +
-/// s·e^((λ − λ_ref)/n) the elastic approach still missing. g is the (2,2)-Padé form of
-/// Φ = ln D − ln H: both sides of Φ are close to linear in λ (EHL: ln H ≈ −0.1λ,
-/// hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), g has Φ's root and slope there and is
-/// within a third-order term of it nearby — Newton from the step's predicted start converges
-/// as on Φ, at the cost of a division instead of a logarithm — and g is monotone (D rises
-/// with λ, H falls), so the bracket kept from `lower_bound` catches the steps a saturated g
-/// (far from the root, |g| → 2) would overshoot with. The film sum at the returned λ is the
-/// last evaluation continued by its tangent (second-order accurate, and free).
+/// Newton steps from `start`, in the log form Φ(λ) = ln D − ln H with D = δ_off − δ_geo +
+/// s·e^((λ − λ_ref)/n) the elastic approach still missing. Both sides are close to linear in λ
+/// (EHL: ln H ≈ −0.1λ, hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges
+/// in a few steps from anywhere in the bracket kept from `lower_bound`; Φ' > 0 throughout.
+/// (The Padé form 2(D − H)/(D + H), a division instead of a logarithm, saturates far from the
+/// root and sent a crowned roller's third step astray; tried and measured, not kept.) The film
+/// sum at the returned λ is the last evaluation continued by its tangent (second-order
+/// accurate, and free).
 fn solve_load(
     law: &PowerLaw,
     films: &StepFilms<'_>,
@@ -201,12 +200,8 @@ fn solve_load(
         // of the loop body specialised for a floored `missing` (a roller whose approach stays
         // short of the law's offset), and such steps cost more on the M4.
         let missing_floored = select(missing > 1.0e-30, missing, 1.0e-30);
-        // g = 2(D − H)/(D + H), the (2,2)-Padé form of ln(D/H): the same root and slope
-        // there, third-order close to it, monotone, at the cost of a division.
-        let sum = missing_floored + h;
-        let residual = 2.0 * (missing_floored - h) / sum;
-        let elastic_slope = inverse_exponent * elastic;
-        let slope = 4.0 * (elastic_slope * h - missing_floored * dh) / (sum * sum);
+        let residual = select(defined, ln(missing_floored / h), -1.0);
+        let slope = inverse_exponent * elastic / missing_floored - dh / h;
         let above = residual > 0.0;
         // Plain values on both sides: a conditional move, no branch.
         hi = if above { lam } else { hi };

@@ -14,6 +14,7 @@ use clap::Args;
 use serde_json::json;
 
 use super::common::{non_negative, positive, print_json, rad_per_s};
+use super::film_plot::{self, PlotOver};
 use bearing_host::config::BearingConfig;
 
 /// Film thickness of a line contact from every available film model.
@@ -56,6 +57,41 @@ pub struct FilmArgs {
     /// Machine-readable output.
     #[arg(long)]
     pub json: bool,
+    /// Also draw the central film of every model against load or speed (PNG), with each
+    /// model's error against the numerical solution (with --config: the inner contact).
+    #[arg(long, value_name = "FILE.png")]
+    pub plot: Option<PathBuf>,
+    /// What the plot varies about the contact's own value.
+    #[arg(long, value_enum, default_value = "load")]
+    pub plot_over: PlotOver,
+    /// Points of the plot (each is one numerical solve).
+    #[arg(long, default_value_t = 25, value_parser = clap::value_parser!(u16).range(2..=400))]
+    pub plot_points: u16,
+    /// The plot spans value/F … value·F.
+    #[arg(long, default_value_t = 10.0, value_parser = positive)]
+    pub plot_span: f64,
+}
+
+/// Draw `--plot` for `contact` if asked, and say where.
+fn maybe_plot(args: &FilmArgs, contact: &ContactInput, title: &str) -> anyhow::Result<()> {
+    if let Some(path) = &args.plot {
+        if args.plot_span <= 1.0 {
+            bail!("--plot-span must exceed 1 (got {})", args.plot_span);
+        }
+        film_plot::plot(
+            contact,
+            args.plot_over,
+            usize::from(args.plot_points),
+            args.plot_span,
+            title,
+            path,
+        )
+        .with_context(|| format!("drawing {}", path.display()))?;
+        if !args.json {
+            println!("plot: {}", path.display());
+        }
+    }
+    Ok(())
 }
 
 /// Every film model's answer for one contact.
@@ -178,8 +214,14 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
         let load = args
             .roller_load
             .context("--roller-load is required with --config")? as f32;
-        let inner = report(&params.contact_input(false, load, speed));
+        let inner_contact = params.contact_input(false, load, speed);
+        let inner = report(&inner_contact);
         let outer = report(&params.contact_input(true, load, speed));
+        maybe_plot(
+            &args,
+            &inner_contact,
+            &format!("{}, inner contact", config.name),
+        )?;
         if args.json {
             let mut value = inner.clone();
             value["contact"] = json!("inner");
@@ -224,6 +266,7 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
         bail!("the contact is not valid in f32 (a value overflows or underflows single precision)");
     }
     let r = report(&contact);
+    maybe_plot(&args, &contact, "line contact")?;
     if args.json {
         print_json(&r)
     } else {

@@ -6,6 +6,7 @@ pub mod ehl;
 pub mod ehl_plot;
 pub mod export;
 pub mod film;
+mod film_plot;
 pub mod shaft;
 pub mod statics;
 pub mod train;
