@@ -11,18 +11,17 @@
 //! hydrodynamic load takes over smoothly. Roller forces are therefore continuous — and
 //! differentiable — in the displacement across the transition.
 //!
-//! **Fixed work.** One pass over the slices per roller and step. Each roller remembers the
-//! whole-roller power law Q = L·(δ − δ_off)^n fitted to its slices at the previous step
-//! (matched in load, dQ/dδ and d²Q/dδ²; exact for a straight untilted roller under the
-//! Palmgren law). With it,
-//! 1. the scalar equation δ_off + (Q/L)^(1/n) = δ_geo + H(Q) is solved in λ = ln Q by
-//!    [`INNER_ITERATIONS`] safeguarded Newton steps, the film following the step's film law
-//!    (`film_table`);
-//! 2. the slices are evaluated at the resulting approach, a fresh power law is fitted there and
-//!    the equation re-solved in [`REFINE_ITERATIONS`] steps; load and moment follow that law.
+//! **Fixed work.** One pass over the slices per roller and step, at the approach the last
+//! step's film predicts (its value there, continued by its sensitivity dH/dδ_geo to the new
+//! geometric approach). The whole-roller power law Q = L·(δ − δ_off)^n fitted to the slices
+//! there (matched in load, dQ/dδ and d²Q/dδ²; exact for a straight untilted roller under the
+//! Palmgren law) carries the scalar equation δ_off + (Q/L)^(1/n) = δ_geo + H(Q), solved in
+//! λ = ln Q by [`NEWTON_ITERATIONS`] safeguarded Newton steps with the film from the bearing's
+//! film table (`film_table`); load and moment follow that law.
 //!
-//! With a warm start from the previous step this meets |Δh|/h ≤ 10⁻³ (tested against a
-//! converged f64 iteration over the PHYSICS.md §5.3 domain).
+//! From a converged warm start at most 0.25 µm of geometric approach away this meets
+//! |Δh|/h ≤ 10⁻³ (tested against a converged f64 iteration over the PHYSICS.md §5.3 domain);
+//! larger jumps cost accuracy at the lightest loads for one step (see the test).
 
 use super::film_table::{FilmSum, StepFilms};
 use crate::contact::{RollerLoad, SlicedRoller};

@@ -54,11 +54,13 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             converged: false,
         };
         for iteration in 0..=max_iterations {
-            // `settle(…, 1)` renews the whole film table at this speed: the force is then one
-            // function of the state, as a Newton iteration on it needs (a real-time step renews
-            // one node, so its force can also depend on the speeds of earlier steps).
+            // `settle(…, 2)` renews the whole film table at this speed and steps twice from the
+            // last iterate's warm start: the force is then one function of the state to f32
+            // resolution, as a Newton iteration to 10⁻⁶ of the load needs (one real-time step
+            // leaves a few 10⁻⁶ of scatter between calls; it renews one node of the table, so
+            // its force can also depend on the speeds of earlier steps).
             let out: BearingOutput<Z> = *match film {
-                Some(f) => self.settle(f, &s, 1),
+                Some(f) => self.settle(f, &s, 2),
                 None => self.step_dry(&s),
             };
             if out.status != StepStatus::Ok {
