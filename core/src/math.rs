@@ -187,6 +187,13 @@ pub fn sin_cos(x: f32) -> (f32, f32) {
     )
 }
 
+/// Square root of a sum of squares or another value known to be finite and ≥ 0 (no clamp:
+/// the film table's blends √(e² + h_RI²) take a dozen of these per roller and step).
+#[inline(always)]
+pub(crate) fn sqrt_non_negative(x: f32) -> f32 {
+    sqrt_raw(x)
+}
+
 /// Square root of a non-negative number; negative or NaN inputs give 0, +∞ gives `f32::MAX`'s
 /// root.
 #[inline]

@@ -101,11 +101,14 @@ pub(crate) struct PowerLaw {
 }
 
 impl PowerLaw {
-    /// A straight roller's law from its first touching slice at tilt ψ: offset the approach at
+    /// A straight roller's law from its first touching slice, untilted: offset the approach at
     /// which that slice touches, Palmgren's whole-roller coefficient (Q_ref = L at s = 1 m).
-    pub(crate) fn untouched<const S: usize>(roller: &SlicedRoller<S>, tilt_rad: f32) -> Self {
+    /// Only the first step after a reset uses it (later steps fall back on the last step's
+    /// law), so its tilt is left out: finding the first slice to touch at a tilt costs a scan
+    /// over the slices for every roller and step.
+    pub(crate) fn untouched<const S: usize>(roller: &SlicedRoller<S>) -> Self {
         Self {
-            offset_m: roller.touch_approach_tilted_m(tilt_rad),
+            offset_m: roller.touch_approach_m(),
             ln_load_ref: roller.ln_nominal_coefficient(),
             span_m: 1.0,
             exponent: 10.0 / 9.0,
@@ -248,8 +251,8 @@ pub(crate) fn solve_roller<const S: usize>(
     //    film–load equation on it. Load and moment follow the law.
     //    Where the slices carry nothing at `approach1` (a light roller whose film was
     //    over-predicted), the last step's law stands in; before the first step, a straight
-    //    roller's law from its first touching slice.
-    let untouched = PowerLaw::untouched(roller, tilt_rad);
+    //    untilted roller's law from its first touching slice.
+    let untouched = PowerLaw::untouched(roller);
     let fallback = memory.law.select(memory.solved, &untouched);
     let law1 = PowerLaw::fit(&r1, approach1, &fallback);
     // From the slices' load where they carry one, else from the last step's; before the first

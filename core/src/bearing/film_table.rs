@@ -29,7 +29,7 @@
 //! most (p·Δλ)²/8: 2·10⁻⁵ for EHL films (p ≈ −0.1), 0.2 % even for |p| = 1.
 
 use crate::film::{ContactInput, FilmModel, MARTIN_CENTRAL, MARTIN_MINIMUM};
-use crate::math::{exp, ln, max, min, select, sqrt};
+use crate::math::{exp, ln, max, min, select, sqrt, sqrt_non_negative};
 
 /// Nodes of the film table per contact kind.
 pub const TABLE_NODES: usize = 96;
@@ -117,16 +117,16 @@ impl Cell {
     #[inline(always)]
     fn at(ln_load: f32) -> Self {
         let position = (ln_load - LN_LOAD_FIRST) * (1.0 / TABLE_STEP);
-        let last = (TABLE_NODES - 2) as f32;
-        let clamped = min(max(position, 0.0), last + 1.0);
-        // One float-to-integer conversion at a fixed cost; the clamp keeps it in the table.
-        let index = min(clamped, last) as usize;
-        let fraction = clamped - index as f32;
-        let inside = (position >= 0.0) & (position <= last + 1.0);
+        let end = (TABLE_NODES - 1) as f32;
+        let clamped = min(max(position, 0.0), end);
+        // One float-to-integer conversion at a fixed cost; the clamp keeps it in the table
+        // (the last node starts no cell: at the end the fraction is 1 across the last cell).
+        let index = min(clamped, end - 1.0) as usize;
         Self {
             index,
-            fraction,
-            slope_scale: select(inside, 1.0 / TABLE_STEP, 0.0),
+            fraction: clamped - index as f32,
+            // Beyond the table the film is continued flat: the clamp moved the position.
+            slope_scale: (1.0 / TABLE_STEP) * f32::from(u8::from(clamped == position)),
         }
     }
 
@@ -243,7 +243,8 @@ impl StepFilms<'_> {
             let (e, de) = cell.interpolate(nodes);
             let (e, de) = (e * self.speed_scale, de * self.speed_scale);
             let hydro_m = b * inv_load;
-            let h = sqrt(e * e + hydro_m * hydro_m);
+            // e and h_RI are finite (table values, and B/Q with λ bracketed): no clamp needed.
+            let h = sqrt_non_negative(e * e + hydro_m * hydro_m);
             total_m += h;
             slope_m += (e * de - hydro_m * hydro_m) / max(h, 1.0e-30);
         }
@@ -272,7 +273,10 @@ impl StepFilms<'_> {
             let hm = cell.interpolate(minimum).0 * self.speed_scale;
             let hr = b * inv_load;
             let hr_min = hr * (MARTIN_MINIMUM / MARTIN_CENTRAL);
-            *o = (sqrt(he * he + hr * hr), sqrt(hm * hm + hr_min * hr_min));
+            *o = (
+                sqrt_non_negative(he * he + hr * hr),
+                sqrt_non_negative(hm * hm + hr_min * hr_min),
+            );
             blended_sum += o.0;
         }
         let scale = select(
