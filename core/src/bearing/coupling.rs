@@ -168,8 +168,8 @@ struct Solved {
     elastic_slope_m: f32,
 }
 
-/// Solve δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by `iterations` safeguarded
-/// Newton steps from `start`, in the log form Φ(λ) = ln D − ln H with D = δ_off − δ_geo +
+/// Solves δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by safeguarded Newton steps
+/// from a start, in the log form Φ(λ) = ln D − ln H with D = δ_off − δ_geo +
 /// s·e^((λ − λ_ref)/n) the elastic approach still missing. Both sides are close to linear in λ
 /// (EHL: ln H ≈ −0.1λ, hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges
 /// in a few steps from anywhere in the bracket kept from `lower_bound`; Φ' > 0 throughout.
@@ -177,64 +177,102 @@ struct Solved {
 /// root and sent a crowned roller's third step astray; tried and measured, not kept.) The film
 /// sum at the returned λ is the last evaluation continued by its tangent (second-order
 /// accurate, and free).
-fn solve_load(
-    law: &PowerLaw,
-    films: &StepFilms<'_>,
-    geometric_approach_m: f32,
-    start: f32,
-    lower_bound: f32,
-    iterations: usize,
-) -> Solved {
-    let gap = geometric_approach_m - law.offset_m;
-    let inverse_exponent = 1.0 / law.exponent;
-    let mut lo = max(lower_bound, LN_LOAD_MIN);
-    let mut hi = LN_LOAD_MAX;
-    let mut lam = select((start > lo) & (start < hi), start, lo + 0.5);
-    let mut last = (lam, 0.0, 0.0, 0.0);
-    for _ in 0..iterations {
-        let elastic = law.span_m * exp(inverse_exponent * (lam - law.ln_load_ref));
+///
+/// One roller's iteration state, so that a step runs the iterations of all its rollers in
+/// lockstep (`Bearing::step`): their chains of dependent operations are independent, and a
+/// superscalar host overlaps them (on the in-order M4 the work is the same).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Newton {
+    gap: f32,
+    inverse_exponent: f32,
+    span_m: f32,
+    ln_load_ref: f32,
+    lo: f32,
+    hi: f32,
+    lam: f32,
+    /// (λ, H, dH/dλ, dE/dλ) at the last evaluation.
+    last: (f32, f32, f32, f32),
+}
+
+impl Newton {
+    fn new(law: &PowerLaw, geometric_approach_m: f32, start: f32, lower_bound: f32) -> Self {
+        let lo = max(lower_bound, LN_LOAD_MIN);
+        let hi = LN_LOAD_MAX;
+        let lam = select((start > lo) & (start < hi), start, lo + 0.5);
+        Self {
+            gap: geometric_approach_m - law.offset_m,
+            inverse_exponent: 1.0 / law.exponent,
+            span_m: law.span_m,
+            ln_load_ref: law.ln_load_ref,
+            lo,
+            hi,
+            lam,
+            last: (lam, 0.0, 0.0, 0.0),
+        }
+    }
+
+    /// One safeguarded Newton step.
+    #[inline(always)]
+    pub(crate) fn iterate(&mut self, films: &StepFilms<'_>) {
+        let lam = self.lam;
+        let elastic = self.span_m * exp(self.inverse_exponent * (lam - self.ln_load_ref));
         let f = films.sum_at(lam);
         let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
-        last = (lam, f.total_m, dh, inverse_exponent * elastic);
-        let missing = elastic - gap;
+        self.last = (lam, f.total_m, dh, self.inverse_exponent * elastic);
+        let missing = elastic - self.gap;
         let defined = missing > 0.0;
         // The floor by a bit-mask select, not `max`: with `max` LLVM emitted a branch to a copy
         // of the loop body specialised for a floored `missing` (a roller whose approach stays
         // short of the law's offset), and such steps cost more on the M4.
         let missing_floored = select(missing > 1.0e-30, missing, 1.0e-30);
         let residual = select(defined, ln(missing_floored / h), -1.0);
-        let slope = inverse_exponent * elastic / missing_floored - dh / h;
+        let slope = self.inverse_exponent * elastic / missing_floored - dh / h;
         let above = residual > 0.0;
         // Plain values on both sides: a conditional move, no branch.
-        hi = if above { lam } else { hi };
-        lo = if above { lo } else { lam };
+        self.hi = if above { lam } else { self.hi };
+        self.lo = if above { self.lo } else { lam };
         let newton = lam - residual / slope;
-        lam = select(
-            defined & (newton >= lo) & (newton <= hi),
+        self.lam = select(
+            defined & (newton >= self.lo) & (newton <= self.hi),
             newton,
-            0.5 * (lo + hi),
+            0.5 * (self.lo + self.hi),
         );
     }
-    let (at, film_m, film_slope_m, elastic_slope_m) = last;
-    Solved {
-        ln_load: lam,
-        film_m: max(film_m + film_slope_m * (lam - at), 0.0),
-        film_slope_m,
-        elastic_slope_m,
+
+    /// The root found so far.
+    fn solved(&self) -> Solved {
+        let (at, film_m, film_slope_m, elastic_slope_m) = self.last;
+        Solved {
+            ln_load: self.lam,
+            film_m: max(film_m + film_slope_m * (self.lam - at), 0.0),
+            film_slope_m,
+            elastic_slope_m,
+        }
     }
 }
 
-/// Solve one roller: geometric approach `δ_geo` (m), tilt `ψ` (rad), with its memory of the
-/// last step (updated).
-pub(crate) fn solve_roller<const S: usize>(
+/// What a roller's step has before its Newton iterations: the slices at the predicted
+/// approach and the power law fitted there.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Prepared {
+    geometric_approach_m: f32,
+    approach1: f32,
+    r1: RollerLoad,
+    law: PowerLaw,
+    /// The film–load equation on `law`, to be iterated [`NEWTON_ITERATIONS`] times.
+    pub newton: Newton,
+}
+
+/// Prepare one roller at geometric approach `δ_geo` (m) and tilt `ψ` (rad) from its memory of
+/// the last step: the slice pass and the power law; the caller then iterates `newton`
+/// [`NEWTON_ITERATIONS`] times and calls [`finish_roller`].
+#[inline(always)]
+pub(crate) fn prepare_roller<const S: usize>(
     roller: &SlicedRoller<S>,
-    films: &StepFilms<'_>,
-    ln_m_offsets: [f32; 2],
-    ln_l: [f32; 2],
     geometric_approach_m: f32,
     tilt_rad: f32,
-    memory: &mut RollerMemory,
-) -> CoupledRoller {
+    memory: &RollerMemory,
+) -> Prepared {
     // 1. The one slice pass, at the approach the last step's film predicts: the film changes
     //    little from step to step (EHL: ∝ Q^−0.1), and what it does change moves the approach
     //    by a fraction of the film.
@@ -260,14 +298,33 @@ pub(crate) fn solve_roller<const S: usize>(
     // is zero) a little above it.
     let start = select(r1.load_n > FIT_MIN_N, law1.ln_load_ref, memory.ln_load)
         + select(memory.solved, 0.0, COLD_START_OFFSET);
-    let solved2 = solve_load(
-        &law1,
-        films,
+    Prepared {
         geometric_approach_m,
-        start,
-        LN_LOAD_MIN,
-        NEWTON_ITERATIONS,
-    );
+        approach1,
+        r1,
+        law: law1,
+        newton: Newton::new(&law1, geometric_approach_m, start, LN_LOAD_MIN),
+    }
+}
+
+/// Finish one prepared roller after its Newton iterations: load, films and regimes, and its
+/// memory for the next step (updated).
+#[inline(always)]
+pub(crate) fn finish_roller(
+    prepared: &Prepared,
+    films: &StepFilms<'_>,
+    ln_m_offsets: [f32; 2],
+    ln_l: [f32; 2],
+    memory: &mut RollerMemory,
+) -> CoupledRoller {
+    let Prepared {
+        geometric_approach_m,
+        approach1,
+        r1,
+        law: law1,
+        newton,
+    } = *prepared;
+    let solved2 = newton.solved();
     let approach_m = geometric_approach_m + solved2.film_m;
     let ln_load = solved2.ln_load;
     let load_n = exp(ln_load);
