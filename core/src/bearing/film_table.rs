@@ -326,6 +326,21 @@ mod tests {
         })
     }
 
+    /// The regression's central films of both contacts at λ, summed: what the table stands for.
+    fn model_sum(contacts: &[ContactInput; 2], ln_load: f32) -> f32 {
+        contacts
+            .iter()
+            .map(|t| {
+                Regression
+                    .film(&ContactInput {
+                        load_n: exp(ln_load),
+                        ..*t
+                    })
+                    .central_m
+            })
+            .sum()
+    }
+
     /// Between the nodes the table returns the model's film within the bound of linear
     /// interpolation ((p·Δλ)²/8 on e, plus the blend), checked against the model itself at
     /// loads between the nodes, 2 N … 50 kN.
@@ -339,17 +354,7 @@ mod tests {
         for k in 0..400 {
             let lambda = 0.7 + k as f32 * 0.025;
             let sum = films.sum_at(lambda);
-            let direct: f32 = c
-                .iter()
-                .map(|t| {
-                    Regression
-                        .film(&ContactInput {
-                            load_n: exp(lambda),
-                            ..*t
-                        })
-                        .central_m
-                })
-                .sum();
+            let direct = model_sum(&c, lambda);
             worst = worst.max((sum.total_m / direct - 1.0).abs());
         }
         assert!(worst < 2.0e-3, "worst {worst}");
@@ -363,17 +368,7 @@ mod tests {
         let mut table = FilmTable::default();
         let _ = table.step(&Regression, c1, martin(&c1), (6.0, 7.0), true);
         let lambda = 6.5;
-        let model: f32 = c2
-            .iter()
-            .map(|t| {
-                Regression
-                    .film(&ContactInput {
-                        load_n: exp(lambda),
-                        ..*t
-                    })
-                    .central_m
-            })
-            .sum();
+        let model = model_sum(&c2, lambda);
         let stale = table
             .step(&Regression, c2, martin(&c2), (6.0, 7.0), false)
             .sum_at(lambda)
