@@ -106,7 +106,7 @@ impl PowerLaw {
     /// Only the first step after a reset uses it (later steps fall back on the last step's
     /// law), so its tilt is left out: finding the first slice to touch at a tilt costs a scan
     /// over the slices for every roller and step.
-    pub(crate) fn untouched<const S: usize>(roller: &SlicedRoller<S>) -> Self {
+    fn untouched<const S: usize>(roller: &SlicedRoller<S>) -> Self {
         Self {
             offset_m: roller.touch_approach_m(),
             ln_load_ref: roller.ln_nominal_coefficient(),

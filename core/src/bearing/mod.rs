@@ -219,11 +219,12 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     /// One lubricated step: roller films from `film`, film-coupled loads, forces, stiffness.
     ///
     /// The film model is called at [`REFRESHES_PER_STEP`] node(s) of the bearing's film table
-    /// per contact kind (`film_table`: the node whose speed is farthest from this step's), so
-    /// every step costs the same; the first step after [`Bearing::new`] or [`Bearing::reset`]
-    /// fills the whole table. [`Bearing::settle`] (the whole table at every step) converges
-    /// the warm start before a real-time loop, and is the call for quasi-static use
-    /// (equilibrium iterations), where the force must be one function of the state.
+    /// (`film_table`: by turns the next node of the loaded range or of the whole table, for
+    /// one contact kind), so every step costs the same; the first step after [`Bearing::new`]
+    /// or [`Bearing::reset`] fills the whole table. [`Bearing::settle`] (the whole table at its
+    /// first step) converges the warm start before a real-time loop, and is the call for
+    /// quasi-static use (equilibrium iterations), where the force must be one function of the
+    /// state.
     ///
     /// A refused `state` leaves the warm start as it was and returns a zero output whose
     /// status names the bad field.
@@ -236,7 +237,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         self.step_renewing(film, state, renew_all)
     }
 
-    /// [`Bearing::step`], renewing every node of the film table (`renew_all`) or the stalest.
+    /// [`Bearing::step`], renewing every node of the film table (`renew_all`) or the next.
     fn step_renewing<F: FilmModel + ?Sized>(
         &mut self,
         film: &F,

@@ -101,9 +101,10 @@ fn force_is_the_sum_of_roller_loads_and_stiffness_is_its_derivative() {
         plus.displacement_m[axis] += h;
         let mut minus = s;
         minus.displacement_m[axis] -= h;
-        // `settle` rebuilds every roller's film law at every step: the force as one function of
-        // the state, which is what K is the derivative of (a real-time step refreshes the
-        // stalest laws only, so its force also depends on the history of the step).
+        // `settle` fills the film table at this speed and converges the warm start: the force
+        // as one function of the state, which is what K is the derivative of (a real-time
+        // step renews one node and starts from the last step's warm start, so its force also
+        // depends on the history of the steps).
         let mut b2 = b.clone();
         let fp = b2.settle(&Regression, &plus, 5).force_n;
         let mut b3 = b.clone();

@@ -16,7 +16,7 @@
 //!   (Hamrock, *Fundamentals of Fluid Film Lubrication*, 1994, ch. 17), valid for any E' and
 //!   sensitive to the raceway radii; implicit in w, solved by a fixed number of Newton steps.
 
-use crate::math::{exp, ln, min, pow, pow_10_9};
+use crate::math::{exp, ln, min, pow, pow_10_9_in_range};
 
 /// Dimensionless constant of the homogeneous Palmgren law δ = k·(w/E')^0.9·l^0.1, per contact.
 ///
@@ -25,10 +25,26 @@ use crate::math::{exp, ln, min, pow, pow_10_9};
 pub const PALMGREN_K: f32 = 2.5775;
 
 /// Largest approach the laws are evaluated at (m).
-pub(crate) const MAX_APPROACH_M: f32 = 1.0e-2; // also keeps `pow_10_9` in its range
+const MAX_APPROACH_M: f32 = 1.0e-2; // also keeps `pow_10_9` in its range
 
 /// Newton steps used to invert the Lundberg law (from a Palmgren start; converged to f32).
 const LUNDBERG_NEWTON_STEPS: usize = 4;
+
+/// A slice's approach `δ` (m) made safe for a law, and the mask its results are multiplied
+/// by: (min(δ, 1 cm), 1) for δ > 0, else (10⁻¹², 0). Approaches beyond 1 cm are not elastic
+/// contact any more; the clamp keeps ∞ finite. Cheap operands: a conditional move; the mask
+/// (a multiplication by 0 or 1) keeps the law's results in the data flow, so no branch can
+/// skip the power and the work does not depend on δ.
+#[inline(always)]
+pub(crate) fn clamped_approach(approach_m: f32) -> (f32, f32) {
+    let positive = approach_m > 0.0;
+    let d = if positive {
+        min(approach_m, MAX_APPROACH_M)
+    } else {
+        1.0e-12
+    };
+    (d, if positive { 1.0 } else { 0.0 })
+}
 
 /// Which load–approach law the slices follow.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -90,19 +106,10 @@ impl BoundLaw {
     /// depend on δ.
     #[inline]
     pub(crate) fn load_per_length(&self, approach_m: f32) -> (f32, f32, f32) {
-        let positive = approach_m > 0.0;
-        // Approaches beyond 1 cm are not elastic contact any more; the clamp keeps ∞ finite.
-        // Cheap operands: a conditional move. The results below are masked by multiplying
-        // with 0 or 1, which keeps them in the data flow (no branch can skip the power).
-        let d = if positive {
-            min(approach_m, MAX_APPROACH_M)
-        } else {
-            1.0e-12
-        };
-        let mask = if positive { 1.0 } else { 0.0 };
+        let (d, mask) = clamped_approach(approach_m);
         let (w, dw, d2w) = match self.law {
             ContactLaw::Palmgren => {
-                let w = self.palmgren_coefficient * pow_10_9(d);
+                let w = self.palmgren_coefficient * pow_10_9_in_range(d);
                 let w_per_d = w / d;
                 (w, (10.0 / 9.0) * w_per_d, (10.0 / 81.0) * w_per_d / d)
             }

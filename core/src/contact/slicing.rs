@@ -5,8 +5,8 @@
 //! the raceway (tan ψ ≈ ψ: below 3·10⁻⁵ relative error for |ψ| ≤ 0.01 rad) and P the crown drop
 //! (on both contacts, hence 2P). Only slices with δ_k > 0 carry load.
 
-use super::law::{BoundLaw, ContactLaw, MAX_APPROACH_M};
-use crate::math::{max, min, pow_10_9_in_range};
+use super::law::{clamped_approach, BoundLaw, ContactLaw};
+use crate::math::pow_10_9_in_range;
 use crate::params::BearingGeometry;
 
 /// Load state of one roller, with the slice sums the stiffness matrix needs.
@@ -95,21 +95,6 @@ impl<const S: usize> SlicedRoller<S> {
         self.law.palmgren_coefficient() * self.slice_length_m * S as f32
     }
 
-    /// Approach at the roller middle where the first slice touches at tilt `ψ` (rad) (m).
-    #[inline]
-    pub fn touch_approach_tilted_m(&self, tilt_rad: f32) -> f32 {
-        let lead = self
-            .positions_m
-            .iter()
-            .zip(self.crown_offsets_m.iter())
-            .fold(f32::MIN, |m, (&x, &c)| max(x * tilt_rad + c, m));
-        if S == 0 {
-            0.0
-        } else {
-            -lead
-        }
-    }
-
     /// ln of the nominal coefficient (precomputed).
     pub fn ln_nominal_coefficient(&self) -> f32 {
         self.ln_nominal_coefficient
@@ -133,15 +118,7 @@ impl<const S: usize> SlicedRoller<S> {
     fn evaluate_palmgren(&self, approach_m: f32, tilt_rad: f32) -> RollerLoad {
         let mut sums = [0.0f32; 6];
         for (&x, &c) in self.positions_m.iter().zip(self.crown_offsets_m.iter()) {
-            let d = approach_m + x * tilt_rad + c;
-            let positive = d > 0.0;
-            // Cheap operands: conditional moves; the mask keeps the power in the data flow.
-            let d = if positive {
-                min(d, MAX_APPROACH_M)
-            } else {
-                1.0e-12
-            };
-            let mask = if positive { 1.0 } else { 0.0 };
+            let (d, mask) = clamped_approach(approach_m + x * tilt_rad + c);
             let w = pow_10_9_in_range(d) * mask;
             let w_per_d = w / d;
             let [sw, swx, sk, skx, skxx, sk2] = &mut sums;
