@@ -1,28 +1,8 @@
 //! CLI behaviour of `bearing film` and `bearing static`: JSON shape, values against closed
 //! forms, and clear non-zero exits for bad numbers and bad files.
 
-use std::path::PathBuf;
-use std::process::Command;
-
-fn bearing(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_bearing"))
-        .args(args)
-        .output()
-        .expect("run bearing");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn config(name: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../configs")
-        .join(name)
-        .display()
-        .to_string()
-}
+mod common;
+use common::{bearing, config};
 
 const CONTACT: [&str; 14] = [
     "--load",

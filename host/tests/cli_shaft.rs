@@ -1,29 +1,8 @@
 //! CLI behaviour of `bearing shaft …`: the `--json` shapes, the Friswell frequencies through
 //! the binary, and clear non-zero exits naming the flag or the file for hostile input.
 
-use std::path::PathBuf;
-use std::process::Command;
-
-fn bearing(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_bearing"))
-        .args(args)
-        .current_dir(std::env::temp_dir())
-        .output()
-        .expect("run bearing");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn config(name: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../configs")
-        .join(name)
-        .display()
-        .to_string()
-}
+mod common;
+use common::{bearing, config};
 
 /// Reference: Friswell et al. (2010) Example 5.9.1 at 4000 rpm.
 #[test]

@@ -9,7 +9,7 @@ use bearing_core::contact::HertzLineContact;
 use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::film::{moes_central, Hydrodynamic, LnGroups};
 use bearing_core::{ContactInput, FilmModel, FilmSource, Regime, Regression};
-use bearing_host::ehl::{self, ContactCase, SolverOptions};
+use bearing_host::ehl::{self, ContactCase, EhlError, EhlSolution, SolverOptions};
 use clap::Args;
 use serde_json::json;
 
@@ -94,6 +94,20 @@ fn maybe_plot(args: &FilmArgs, contact: &ContactInput, title: &str) -> anyhow::R
     Ok(())
 }
 
+/// The numerical solution of the contact (PHYSICS.md §5.2, default options): the reference
+/// of every other film model.
+pub(super) fn numerical_solution(contact: &ContactInput) -> Result<EhlSolution, EhlError> {
+    ContactCase::new(
+        f64::from(contact.load_per_length_n_per_m()),
+        f64::from(contact.entrainment_speed_m_s),
+        f64::from(contact.reduced_radius_m),
+        f64::from(contact.reduced_modulus_pa),
+        f64::from(contact.pressure_viscosity_pa_inv),
+        f64::from(contact.viscosity_pa_s),
+    )
+    .and_then(|case| ehl::solve(&case, &SolverOptions::default()))
+}
+
 /// Every film model's answer for one contact.
 fn report(contact: &ContactInput) -> serde_json::Value {
     let hertz = HertzLineContact::new(
@@ -106,16 +120,7 @@ fn report(contact: &ContactInput) -> serde_json::Value {
     let (m, l) = (g.ln_m().exp(), g.ln_l().exp());
     // Moes: H_c = (h_c/R)(2U)^−1/2.
     let moes_m = moes_central(m, l) * (2.0 * g.ln_u.exp()).sqrt() * contact.reduced_radius_m;
-    // The numerical solution (PHYSICS.md §5.2, default options) is the reference of the others.
-    let numerical = ContactCase::new(
-        f64::from(contact.load_per_length_n_per_m()),
-        f64::from(contact.entrainment_speed_m_s),
-        f64::from(contact.reduced_radius_m),
-        f64::from(contact.reduced_modulus_pa),
-        f64::from(contact.pressure_viscosity_pa_inv),
-        f64::from(contact.viscosity_pa_s),
-    )
-    .and_then(|case| ehl::solve(&case, &SolverOptions::default()));
+    let numerical = numerical_solution(contact);
     let reference = numerical.as_ref().ok().map(|n| n.central_film_m);
     let entry = |name: &str, central: f32, minimum: Option<f32>, fell_back: bool| {
         let error = reference.map(|r| (f64::from(central) - r) / r);

@@ -1,10 +1,10 @@
 //! `bearing film --plot`: central film of every film model against load or entrainment speed,
 //! with each model's error against the numerical solution, as a PNG.
 
+use super::film::numerical_solution;
 use anyhow::{anyhow, Result};
 use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::{ContactInput, FilmModel, FilmSource, Regression};
-use bearing_host::ehl::{self, ContactCase, SolverOptions};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -53,17 +53,7 @@ fn sweep(contact: &ContactInput, over: PlotOver, points: usize, span: f64) -> Ve
         .map(|k| {
             let x = centre * span.powf(-1.0 + 2.0 * k as f64 / (n - 1) as f64);
             let c = varied(contact, over, x);
-            let numerical = ContactCase::new(
-                f64::from(c.load_per_length_n_per_m()),
-                f64::from(c.entrainment_speed_m_s),
-                f64::from(c.reduced_radius_m),
-                f64::from(c.reduced_modulus_pa),
-                f64::from(c.pressure_viscosity_pa_inv),
-                f64::from(c.viscosity_pa_s),
-            )
-            .and_then(|case| ehl::solve(&case, &SolverOptions::default()))
-            .ok()
-            .map(|s| s.central_film_m);
+            let numerical = numerical_solution(&c).ok().map(|s| s.central_film_m);
             let net =
                 |f: bearing_core::Film| (f64::from(f.central_m), f.source == FilmSource::Fallback);
             Point {
