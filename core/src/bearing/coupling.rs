@@ -25,11 +25,14 @@
 
 use super::film_table::{FilmSum, StepFilms};
 use crate::contact::{RollerLoad, SlicedRoller};
-use crate::film::{ContactInput, Regime};
-use crate::math::{exp, ln, max, min, select};
+use crate::film::{ContactInput, Regime, RegimeAxis};
+use crate::math::{exp_in_range, ln_normal, max, min, select};
 
-/// Safeguarded Newton steps of the scalar film–load equation per roller and step.
-pub const NEWTON_ITERATIONS: usize = 3;
+/// Safeguarded Newton steps of the scalar film–load equation per roller and step. Two suffice
+/// with the step of [`Newton::iterate`]: the warm start's accuracy test passes, and the shaft
+/// integrator's Newton converges on the forces (`bearing shaft sweep --film int`); the step on
+/// ln(D/H) it replaced needed three.
+pub const NEWTON_ITERATIONS: usize = 2;
 /// ln Q above the dry load where a roller's first solve starts.
 const COLD_START_OFFSET: f32 = 0.1;
 
@@ -148,7 +151,7 @@ impl PowerLaw {
         );
         let fitted = Self {
             offset_m: approach_m - span_m,
-            ln_load_ref: ln(max(q, FIT_MIN_N)),
+            ln_load_ref: ln_normal(max(q, FIT_MIN_N)),
             span_m,
             exponent: select(curvature_fit, min(max(span_m * rho1, 1.0), 4.0), 10.0 / 9.0),
         };
@@ -162,19 +165,18 @@ struct Solved {
     ln_load: f32,
     /// H at λ (m), extrapolated linearly from the last evaluation.
     film_m: f32,
-    /// dH/dλ at the last evaluation (m).
-    film_slope_m: f32,
+    /// The last evaluation of the film sum.
+    last: FilmSum,
     /// dδ/dλ of the elastic approach at the last evaluation (m).
     elastic_slope_m: f32,
 }
 
 /// Solves δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by safeguarded Newton steps
-/// from a start, in the log form Φ(λ) = ln D − ln H with D = δ_off − δ_geo +
+/// from a start, on the log ratio Φ(λ) = ln D − ln H with D = δ_off − δ_geo +
 /// s·e^((λ − λ_ref)/n) the elastic approach still missing. Both sides are close to linear in λ
 /// (EHL: ln H ≈ −0.1λ, hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges
 /// in a few steps from anywhere in the bracket kept from `lower_bound`; Φ' > 0 throughout.
-/// (The Padé form 2(D − H)/(D + H), a division instead of a logarithm, saturates far from the
-/// root and sent a crowned roller's third step astray; tried and measured, not kept.) The film
+/// The step is taken on 2·sinh(Φ/2), which needs no logarithm ([`Newton::iterate`]). The film
 /// sum at the returned λ is the last evaluation continued by its tangent (second-order
 /// accurate, and free).
 ///
@@ -190,8 +192,8 @@ pub(crate) struct Newton {
     lo: f32,
     hi: f32,
     lam: f32,
-    /// (λ, H, dH/dλ, dE/dλ) at the last evaluation.
-    last: (f32, f32, f32, f32),
+    /// λ, the film sum and dE/dλ at the last evaluation.
+    last: (f32, FilmSum, f32),
 }
 
 impl Newton {
@@ -207,31 +209,37 @@ impl Newton {
             lo,
             hi,
             lam,
-            last: (lam, 0.0, 0.0, 0.0),
+            last: (lam, FilmSum::default(), 0.0),
         }
     }
 
-    /// One safeguarded Newton step.
+    /// One safeguarded Newton step on 2·sinh(Φ/2) = √(D/H) − √(H/D), a residual with the root
+    /// and the sign of Φ = ln(D/H) but no logarithm: its Newton step is
+    /// −2·tanh(Φ/2)/Φ' = 2(H − D)/((D + H)·Φ'), with Φ' = D'/D − H'/H. Near the root it is
+    /// Newton's step on Φ (they differ by Φ³/12); far from it the step is at most 2/Φ', so it
+    /// never overshoots where the log form's tangent would (the Padé residual, whose step
+    /// grows like sinh Φ, did). All in one division.
     #[inline(always)]
     pub(crate) fn iterate(&mut self, films: &StepFilms<'_>) {
         let lam = self.lam;
-        let elastic = self.span_m * exp(self.inverse_exponent * (lam - self.ln_load_ref));
+        // λ and λ_ref are bracketed (ln 10⁻⁴ … ln 10⁷ and ≥ ln 10⁻³), n ≥ 1: in range.
+        let elastic = self.span_m * exp_in_range(self.inverse_exponent * (lam - self.ln_load_ref));
         let f = films.sum_at(lam);
         let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
-        self.last = (lam, f.total_m, dh, self.inverse_exponent * elastic);
+        let elastic_slope = self.inverse_exponent * elastic;
+        self.last = (lam, f, elastic_slope);
         let missing = elastic - self.gap;
         let defined = missing > 0.0;
         // The floor by a bit-mask select, not `max`: with `max` LLVM emitted a branch to a copy
         // of the loop body specialised for a floored `missing` (a roller whose approach stays
         // short of the law's offset), and such steps cost more on the M4.
-        let missing_floored = select(missing > 1.0e-30, missing, 1.0e-30);
-        let residual = select(defined, ln(missing_floored / h), -1.0);
-        let slope = self.inverse_exponent * elastic / missing_floored - dh / h;
-        let above = residual > 0.0;
+        let d = select(missing > 1.0e-30, missing, 1.0e-30);
+        // 2(H − D)/((D + H)·(D'/D − H'/H)), multiplied through by D·H (> 0; D' > 0, H' ≤ 0).
+        let newton = lam + 2.0 * (h - d) * d * h / ((d + h) * (elastic_slope * h - dh * d));
+        let above = missing > h;
         // Plain values on both sides: a conditional move, no branch.
         self.hi = if above { lam } else { self.hi };
         self.lo = if above { self.lo } else { lam };
-        let newton = lam - residual / slope;
         self.lam = select(
             defined & (newton >= self.lo) & (newton <= self.hi),
             newton,
@@ -241,11 +249,11 @@ impl Newton {
 
     /// The root found so far.
     fn solved(&self) -> Solved {
-        let (at, film_m, film_slope_m, elastic_slope_m) = self.last;
+        let (at, last, elastic_slope_m) = self.last;
         Solved {
             ln_load: self.lam,
-            film_m: max(film_m + film_slope_m * (self.lam - at), 0.0),
-            film_slope_m,
+            film_m: max(last.total_m + last.slope_m * (self.lam - at), 0.0),
+            last,
             elastic_slope_m,
         }
     }
@@ -313,8 +321,7 @@ pub(crate) fn prepare_roller<const S: usize>(
 pub(crate) fn finish_roller(
     prepared: &Prepared,
     films: &StepFilms<'_>,
-    ln_m_offsets: [f32; 2],
-    ln_l: [f32; 2],
+    regime_axes: &[RegimeAxis; 2],
     memory: &mut RollerMemory,
 ) -> CoupledRoller {
     let Prepared {
@@ -327,15 +334,15 @@ pub(crate) fn finish_roller(
     let solved2 = newton.solved();
     let approach_m = geometric_approach_m + solved2.film_m;
     let ln_load = solved2.ln_load;
-    let load_n = exp(ln_load);
+    let load_n = exp_in_range(ln_load);
     let mut load = r1;
     // At the root, Q = e^λ is the law's load at `approach_m`; a roller whose approach stays
     // short of the law's offset (no film, separated) carries nothing.
     load.load_n = select(approach_m > law1.offset_m, load_n, 0.0);
     load.moment_nm += load.stiffness_moment_n * (approach_m - approach1);
     // At the root, dE/dλ·dλ = dδ_geo + dH/dλ·dλ: dH/dδ_geo = H'/(E' − H').
-    let film_sensitivity =
-        solved2.film_slope_m / max(solved2.elastic_slope_m - solved2.film_slope_m, 1.0e-30);
+    let film_slope_m = solved2.last.slope_m;
+    let film_sensitivity = film_slope_m / max(solved2.elastic_slope_m - film_slope_m, 1.0e-30);
     *memory = RollerMemory {
         ln_load,
         film_m: solved2.film_m,
@@ -345,23 +352,13 @@ pub(crate) fn finish_roller(
         solved: true,
     };
 
-    let sum = FilmSum {
-        total_m: solved2.film_m,
-        slope_m: solved2.film_slope_m,
-        inv_load: 1.0 / load_n,
-    };
-    let per_contact = films.contacts_at(ln_load, &sum);
-    let regime = |k: usize| {
-        let offset = ln_m_offsets.get(k).copied().unwrap_or(0.0);
-        let l = ln_l.get(k).copied().unwrap_or(0.0);
-        Regime::from_ln_moes(ln_load - offset, l)
-    };
+    let per_contact = films.contacts_from(&solved2.last, solved2.film_m);
     CoupledRoller {
         load,
         approach_m,
         ln_load,
         films: per_contact,
-        film_slope_m_per_n: sum.slope_m / load_n,
-        regimes: [regime(0), regime(1)],
+        film_slope_m_per_n: film_slope_m / load_n,
+        regimes: regime_axes.map(|axis| axis.at(ln_load)),
     }
 }

@@ -54,13 +54,15 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             converged: false,
         };
         for iteration in 0..=max_iterations {
-            // `settle(…, 2)` renews the whole film table at this speed and steps twice from the
-            // last iterate's warm start: the force is then one function of the state to f32
-            // resolution, as a Newton iteration to 10⁻⁶ of the load needs (one real-time step
-            // leaves a few 10⁻⁶ of scatter between calls; it renews one node of the table, so
-            // its force can also depend on the speeds of earlier steps).
+            // `settle(…, SETTLE_STEPS)` renews the whole film table at this speed and steps
+            // from the last iterate's warm start as often as a cold start needs: the force is
+            // then one function of the state to f32 resolution, as a Newton iteration to 10⁻⁶
+            // of the load needs. (One real-time step leaves a few 10⁻⁶ of scatter between
+            // calls; three steps still left 1.7·10⁻⁶ at 2 kN on the hub bearing, and the Newton
+            // iteration stalled there. A step renews one node of the table, so its force can
+            // also depend on the speeds of earlier steps.)
             let out: BearingOutput<Z> = *match film {
-                Some(f) => self.settle(f, &s, 2),
+                Some(f) => self.settle(f, &s, super::SETTLE_STEPS),
                 None => self.step_dry(&s),
             };
             if out.status != StepStatus::Ok {

@@ -29,7 +29,7 @@
 //! most (p·Δλ)²/8: 2·10⁻⁵ for EHL films (p ≈ −0.1), 0.2 % even for |p| = 1.
 
 use crate::film::{ContactInput, FilmModel, MARTIN_CENTRAL, MARTIN_MINIMUM};
-use crate::math::{exp, ln, max, min, select, sqrt, sqrt_non_negative};
+use crate::math::{exp, exp_in_range, ln, max, min, select, sqrt, sqrt_non_negative};
 
 /// Nodes of the film table per contact kind.
 pub const TABLE_NODES: usize = 96;
@@ -91,21 +91,25 @@ pub(crate) struct StepFilms<'a> {
     martin: [f32; 2],
 }
 
-/// Film sum of one roller at λ = ln Q.
-#[derive(Clone, Copy, Debug)]
+/// Film sum of one roller at λ = ln Q, with what the roller's outputs take from it.
+#[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct FilmSum {
     /// H = Σ √(e² + h_RI²), the film both contacts add to the approach (m).
     pub total_m: f32,
     /// dH/dλ (m).
     pub slope_m: f32,
     /// 1/Q = e^(−λ) (1/N).
-    pub inv_load: f32,
+    inv_load: f32,
+    /// The terms of the sum: each contact's central film (m).
+    central_m: [f32; 2],
+    /// Where λ fell in the table.
+    cell: Cell,
 }
 
 /// Where λ falls in the table: the cell's first node and the fraction across it, held to the
 /// table at both ends (the film is continued flat beyond them: below 1 N Martin's film rules,
 /// above 144 kN no roller goes).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 struct Cell {
     index: usize,
     fraction: f32,
@@ -235,57 +239,62 @@ impl StepFilms<'_> {
     /// H and dH/dλ at λ = ln Q: each contact's √(e² + h_RI²), summed.
     #[inline]
     pub(crate) fn sum_at(&self, ln_load: f32) -> FilmSum {
-        let inv_load = exp(-ln_load);
+        // λ is bracketed by the scalar solve: in range.
+        let inv_load = exp_in_range(-ln_load);
         let cell = Cell::at(ln_load);
         let mut total_m = 0.0;
         let mut slope_m = 0.0;
-        for (nodes, &b) in self.table.central.iter().zip(self.martin.iter()) {
+        let mut central_m = [0.0; 2];
+        for ((nodes, &b), h_out) in self
+            .table
+            .central
+            .iter()
+            .zip(self.martin.iter())
+            .zip(central_m.iter_mut())
+        {
             let (e, de) = cell.interpolate(nodes);
             let (e, de) = (e * self.speed_scale, de * self.speed_scale);
             let hydro_m = b * inv_load;
             // e and h_RI are finite (table values, and B/Q with λ bracketed): no clamp needed.
             let h = sqrt_non_negative(e * e + hydro_m * hydro_m);
+            *h_out = h;
             total_m += h;
             slope_m += (e * de - hydro_m * hydro_m) / max(h, 1.0e-30);
         }
         FilmSum {
-            inv_load,
             total_m,
             slope_m,
+            inv_load,
+            central_m,
+            cell,
         }
     }
 
-    /// Central and minimum film of each contact at λ, consistent with the sum: the central
-    /// films are scaled so that they add up to the sum's total (the coupling's root carries the
-    /// sum continued by its tangent).
-    pub(crate) fn contacts_at(&self, ln_load: f32, sum: &FilmSum) -> [(f32, f32); 2] {
-        let inv_load = sum.inv_load;
-        let cell = Cell::at(ln_load);
-        let mut out = [(0.0, 0.0); 2];
-        let mut blended_sum = 0.0;
-        for (((o, central), minimum), &b) in out
-            .iter_mut()
-            .zip(self.table.central.iter())
-            .zip(self.table.minimum.iter())
-            .zip(self.martin.iter())
-        {
-            let he = cell.interpolate(central).0 * self.speed_scale;
-            let hm = cell.interpolate(minimum).0 * self.speed_scale;
-            let hr = b * inv_load;
-            let hr_min = hr * (MARTIN_MINIMUM / MARTIN_CENTRAL);
-            *o = (
-                sqrt_non_negative(he * he + hr * hr),
-                sqrt_non_negative(hm * hm + hr_min * hr_min),
-            );
-            blended_sum += o.0;
-        }
+    /// Central and minimum film of each contact for a roller whose scalar solve evaluated the
+    /// sum `last` at its last iterate and returned the film sum `total_m` at its root (`last`
+    /// continued by its tangent). The minimum films are interpolated where `last` was; both
+    /// films of both contacts are then scaled by total_m/last.total_m, so that the central
+    /// films add up to the root's sum. (The last Newton step is small, and this spares a
+    /// second look-up in the table at the root.)
+    pub(crate) fn contacts_from(&self, last: &FilmSum, total_m: f32) -> [(f32, f32); 2] {
         let scale = select(
-            blended_sum > 0.0,
-            sum.total_m / max(blended_sum, 1.0e-30),
+            last.total_m > 0.0,
+            total_m / max(last.total_m, 1.0e-30),
             0.0,
         );
-        for o in out.iter_mut() {
-            o.0 *= scale;
+        let mut out = [(0.0, 0.0); 2];
+        for (((o, minimum), &b), &central) in out
+            .iter_mut()
+            .zip(self.table.minimum.iter())
+            .zip(self.martin.iter())
+            .zip(last.central_m.iter())
+        {
+            let hm = last.cell.interpolate(minimum).0 * self.speed_scale;
+            let hr_min = b * last.inv_load * (MARTIN_MINIMUM / MARTIN_CENTRAL);
+            *o = (
+                central * scale,
+                sqrt_non_negative(hm * hm + hr_min * hr_min) * scale,
+            );
         }
         out
     }

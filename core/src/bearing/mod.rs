@@ -19,7 +19,7 @@ pub use output::{BearingOutput, RollerOutput, StepStatus};
 
 use crate::contact::{ContactLaw, SlicedRoller};
 use crate::error::{in_range, Allowed, ParamError};
-use crate::film::{ContactInput, FilmModel, FilmSource, Regime};
+use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis};
 use crate::math::{ln, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use coupling::{finish_roller, prepare_roller, ContactContext, Prepared, RollerMemory};
@@ -273,8 +273,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             .table
             .step(film, templates, martin, self.load_span, renew_all);
         self.table_stale = false;
-        let ln_m_offsets = [inner.ln_m_offset, outer.ln_m_offset];
-        let ln_l = [inner.ln_l, outer.ln_l];
+        let regime_axes = [inner, outer].map(|c| RegimeAxis::new(c.ln_m_offset, c.ln_l));
         let mut span = (f32::MAX, f32::MIN);
         let parts = Parts {
             params: &self.params,
@@ -322,7 +321,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                     p.newton = newton;
                     p
                 };
-                let r = finish_roller(&p, &films, ln_m_offsets, ln_l, memory);
+                let r = finish_roller(&p, &films, &regime_axes, memory);
                 let loaded = r.load.load_n >= 1.0;
                 span = (
                     crate::math::select(loaded, crate::math::min(span.0, r.ln_load), span.0),

@@ -25,7 +25,7 @@ use crate::math::{exp, ln, min, pow, pow_10_9_in_range};
 pub const PALMGREN_K: f32 = 2.5775;
 
 /// Largest approach the laws are evaluated at (m).
-const MAX_APPROACH_M: f32 = 1.0e-2; // also keeps `pow_10_9` in its range
+pub(crate) const MAX_APPROACH_M: f32 = 1.0e-2; // also keeps `pow_10_9` in its range
 
 /// Newton steps used to invert the Lundberg law (from a Palmgren start; converged to f32).
 const LUNDBERG_NEWTON_STEPS: usize = 4;

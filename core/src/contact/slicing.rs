@@ -5,8 +5,12 @@
 //! the raceway (tan ψ ≈ ψ: below 3·10⁻⁵ relative error for |ψ| ≤ 0.01 rad) and P the crown drop
 //! (on both contacts, hence 2P). Only slices with δ_k > 0 carry load.
 
-use super::law::{clamped_approach, BoundLaw, ContactLaw};
-use crate::math::pow_10_9_in_range;
+use super::law::{BoundLaw, ContactLaw, MAX_APPROACH_M};
+use crate::math::{max, min, ninth_root_in_range, select};
+
+/// Largest roller tilt the slice pass evaluates (rad): twice the largest the operating state
+/// admits (`params::operating::MAX_TILT_RAD`), which a roller sees as tilt_y·cos θ − tilt_x·sin θ.
+const MAX_TILT_RAD: f32 = 0.02;
 use crate::params::BearingGeometry;
 
 /// Load state of one roller, with the slice sums the stiffness matrix needs.
@@ -111,23 +115,33 @@ impl<const S: usize> SlicedRoller<S> {
     }
 
     /// [`SlicedRoller::evaluate`] under the Palmgren law w = c·δ^(10/9), with its derivatives
-    /// (10/9)·w/δ and (10/81)·w/δ²: the slice sums are taken of w, w/δ and w/δ², and the
-    /// constants (c, the slice length, 10/9, 10/81) applied once to the sums — the real-time
-    /// step's slice pass, a third cheaper than the general loop.
+    /// (10/9)·w/δ and (10/81)·w/δ²: with r = δ^(1/9) the slice sums are taken of w = δ·r,
+    /// w/δ = r and w/δ² = r/δ, and the constants (c, the slice length, 10/9, 10/81) applied
+    /// once to the sums — the real-time step's slice pass, half the cost of the general loop.
+    /// The roller's approach and tilt are held to [`MAX_APPROACH_M`] and [`MAX_TILT_RAD`]
+    /// once, so that every slice's approach is ≤ 1.1 cm (in the root's range) and a slice
+    /// needs only its sign tested.
     #[inline]
     fn evaluate_palmgren(&self, approach_m: f32, tilt_rad: f32) -> RollerLoad {
+        // `min`/`max` take the bound for NaN: hostile input stays finite.
+        let approach_m = min(approach_m, MAX_APPROACH_M);
+        let tilt_rad = min(max(tilt_rad, -MAX_TILT_RAD), MAX_TILT_RAD);
         let mut sums = [0.0f32; 6];
         for (&x, &c) in self.positions_m.iter().zip(self.crown_offsets_m.iter()) {
-            let (d, mask) = clamped_approach(approach_m + x * tilt_rad + c);
-            let w = pow_10_9_in_range(d) * mask;
-            let w_per_d = w / d;
+            let slice_approach = approach_m + x * tilt_rad + c;
+            let touching = slice_approach > 0.0;
+            let d = select(touching, slice_approach, 1.0e-12);
+            // The mask multiplies: the root stays in the data flow, the work is fixed.
+            let r = ninth_root_in_range(d) * if touching { 1.0 } else { 0.0 };
+            let w = d * r;
             let [sw, swx, sk, skx, skxx, sk2] = &mut sums;
             *sw += w;
             *swx += w * x;
-            *sk += w_per_d;
-            *skx += w_per_d * x;
-            *skxx += w_per_d * x * x;
-            *sk2 += w_per_d / d;
+            *sk += r;
+            let rx = r * x;
+            *skx += rx;
+            *skxx += rx * x;
+            *sk2 += r / d;
         }
         let [sw, swx, sk, skx, skxx, sk2] = sums;
         let scale = self.law.palmgren_coefficient() * self.slice_length_m;

@@ -149,7 +149,7 @@ pub use groups::LnGroups;
 pub use hydrodynamic::{
     martin_central_m, martin_load_per_length, Hydrodynamic, MARTIN_CENTRAL, MARTIN_MINIMUM,
 };
-pub use regime::Regime;
+pub use regime::{Regime, RegimeAxis};
 pub use regression::{
     dowson_higginson_minimum_m, dowson_toyoda_central_m, moes_central, Regression,
     CENTRAL_LOAD_EXPONENT, MINIMUM_LOAD_EXPONENT,
