@@ -102,7 +102,12 @@ pub(crate) fn ln_normal(x: f32) -> f32 {
 /// or ∞.
 #[inline]
 pub fn exp2(y: f32) -> f32 {
-    let y = min(max(y, -126.0), 127.0);
+    exp2_in_range(min(max(y, -126.0), 127.0))
+}
+
+/// [`exp2`] of a `y` known to lie in [−126, 127], without the clamp (see [`exp_in_range`]).
+#[inline(always)]
+pub(crate) fn exp2_in_range(y: f32) -> f32 {
     let n = round_small(y);
     horner(&EXP2_POLY, y - n) * pow2i(n)
 }

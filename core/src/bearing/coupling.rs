@@ -26,7 +26,7 @@
 use super::film_table::{FilmSum, StepFilms};
 use crate::contact::{RollerLoad, SlicedRoller};
 use crate::film::{ContactInput, Regime, RegimeAxis};
-use crate::math::{exp_in_range, ln_normal, max, min, select};
+use crate::math::{exp2_in_range, exp_in_range, ln_normal, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step. Two suffice
 /// with the step of [`Newton::iterate`]: the warm start's accuracy test passes, and the shaft
@@ -81,10 +81,24 @@ pub(crate) struct RollerMemory {
     pub geometric_approach_m: f32,
     /// dH/dδ_geo at the last step: how the film followed the geometric approach (−1 … 0).
     pub film_sensitivity: f32,
-    /// The power law fitted to the slices at the last step.
+    /// The power law fitted to the slices at the last step; before the first step, a straight
+    /// untilted roller's law from its first touching slice (`PowerLaw::untouched`).
     pub law: PowerLaw,
-    /// A step has been solved since the bearing was made or reset.
-    pub solved: bool,
+    /// Added to ln Q at the start of the solve: [`COLD_START_OFFSET`] before the first step
+    /// (no film predicted, so the slices' load is the dry one, where the missing approach is
+    /// zero), then 0.
+    pub start_offset: f32,
+}
+
+impl RollerMemory {
+    /// The memory of a roller before its first step (after `Bearing::new` or `reset`).
+    pub(crate) fn cold<const S: usize>(roller: &SlicedRoller<S>) -> Self {
+        Self {
+            law: PowerLaw::untouched(roller),
+            start_offset: COLD_START_OFFSET,
+            ..Self::default()
+        }
+    }
 }
 
 /// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach, kept
@@ -106,9 +120,9 @@ pub(crate) struct PowerLaw {
 impl PowerLaw {
     /// A straight roller's law from its first touching slice, untilted: offset the approach at
     /// which that slice touches, Palmgren's whole-roller coefficient (Q_ref = L at s = 1 m).
-    /// Only the first step after a reset uses it (later steps fall back on the last step's
-    /// law), so its tilt is left out: finding the first slice to touch at a tilt costs a scan
-    /// over the slices for every roller and step.
+    /// Only the first step after a reset uses it (it is the cold memory's law; later steps
+    /// fall back on the last step's), so its tilt is left out: finding the first slice to
+    /// touch at a tilt costs a scan over the slices.
     fn untouched<const S: usize>(roller: &SlicedRoller<S>) -> Self {
         Self {
             offset_m: roller.touch_approach_m(),
@@ -137,13 +151,10 @@ impl PowerLaw {
         let q = load.load_n;
         let k = load.stiffness_n_per_m;
         let fit = (q > FIT_MIN_N) & (k > 0.0);
-        let rho1 = select(fit, k / max(q, FIT_MIN_N), 1.0);
-        let rho2 = select(
-            fit,
-            load.stiffness_derivative_n_per_m2 / max(k, 1.0e-30),
-            0.0,
-        );
-        let curvature_fit = fit & (rho1 - rho2 > 0.0);
+        // Finite whatever the slices gave; where `fit` fails the fallback replaces the result.
+        let rho1 = k / max(q, FIT_MIN_N);
+        let rho2 = load.stiffness_derivative_n_per_m2 / max(k, 1.0e-30);
+        let curvature_fit = rho1 - rho2 > 0.0;
         let span_m = select(
             curvature_fit,
             1.0 / max(rho1 - rho2, 1.0e-30),
@@ -187,6 +198,8 @@ struct Solved {
 pub(crate) struct Newton {
     gap: f32,
     inverse_exponent: f32,
+    /// log₂e/n: the law's exponential taken as a power of two.
+    inverse_exponent_log2: f32,
     span_m: f32,
     ln_load_ref: f32,
     lo: f32,
@@ -204,6 +217,7 @@ impl Newton {
         Self {
             gap: geometric_approach_m - law.offset_m,
             inverse_exponent: 1.0 / law.exponent,
+            inverse_exponent_log2: core::f32::consts::LOG2_E / law.exponent,
             span_m: law.span_m,
             ln_load_ref: law.ln_load_ref,
             lo,
@@ -222,8 +236,10 @@ impl Newton {
     #[inline(always)]
     pub(crate) fn iterate(&mut self, films: &StepFilms<'_>) {
         let lam = self.lam;
-        // λ and λ_ref are bracketed (ln 10⁻⁴ … ln 10⁷ and ≥ ln 10⁻³), n ≥ 1: in range.
-        let elastic = self.span_m * exp_in_range(self.inverse_exponent * (lam - self.ln_load_ref));
+        // e^((λ − λ_ref)/n) = 2^(log₂e·(λ − λ_ref)/n): λ and λ_ref are bracketed (ln 10⁻⁴ …
+        // ln 10⁷ and ≥ ln 10⁻³), n ≥ 1, so the argument is in range.
+        let elastic =
+            self.span_m * exp2_in_range(self.inverse_exponent_log2 * (lam - self.ln_load_ref));
         let f = films.sum_at(lam);
         let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
         let elastic_slope = self.inverse_exponent * elastic;
@@ -296,16 +312,13 @@ pub(crate) fn prepare_roller<const S: usize>(
     //    curvature: its error is third order in the approach's step from `approach1`), and the
     //    film–load equation on it. Load and moment follow the law.
     //    Where the slices carry nothing at `approach1` (a light roller whose film was
-    //    over-predicted), the last step's law stands in; before the first step, a straight
-    //    untilted roller's law from its first touching slice.
-    let untouched = PowerLaw::untouched(roller);
-    let fallback = memory.law.select(memory.solved, &untouched);
-    let law1 = PowerLaw::fit(&r1, approach1, &fallback);
+    //    over-predicted), the last step's law stands in (before the first step, the cold
+    //    memory's).
+    let law1 = PowerLaw::fit(&r1, approach1, &memory.law);
     // From the slices' load where they carry one, else from the last step's; before the first
-    // step (no film predicted, so the slices' load is the dry one, where the missing approach
-    // is zero) a little above it.
-    let start = select(r1.load_n > FIT_MIN_N, law1.ln_load_ref, memory.ln_load)
-        + select(memory.solved, 0.0, COLD_START_OFFSET);
+    // step a little above it.
+    let start =
+        select(r1.load_n > FIT_MIN_N, law1.ln_load_ref, memory.ln_load) + memory.start_offset;
     Prepared {
         geometric_approach_m,
         approach1,
@@ -349,7 +362,7 @@ pub(crate) fn finish_roller(
         geometric_approach_m,
         film_sensitivity: min(max(film_sensitivity, -1.0), 0.0),
         law: law1,
-        solved: true,
+        start_offset: 0.0,
     };
 
     let per_contact = films.contacts_from(&solved2.last, solved2.film_m);

@@ -87,8 +87,10 @@ pub(crate) struct StepFilms<'a> {
     table: &'a FilmTable,
     /// u^κ of this step.
     speed_scale: f32,
-    /// Martin coefficients B with h_RI = B/Q, inner and outer (m·N).
-    martin: [f32; 2],
+    /// Martin coefficients B with h_RI = B/Q, inner and outer, divided by u^κ (m·N/(m/s)^κ):
+    /// the films are blended in the table's units, √(e² + (B/u^κ·1/Q)²), and scaled by u^κ
+    /// once.
+    martin_per_scale: [f32; 2],
 }
 
 /// Film sum of one roller at λ = ln Q, with what the roller's outputs take from it.
@@ -100,8 +102,8 @@ pub(crate) struct FilmSum {
     pub slope_m: f32,
     /// 1/Q = e^(−λ) (1/N).
     inv_load: f32,
-    /// The terms of the sum: each contact's central film (m).
-    central_m: [f32; 2],
+    /// The terms of the sum, each contact's central film, divided by u^κ.
+    central: [f32; 2],
     /// Where λ fell in the table.
     cell: Cell,
 }
@@ -155,12 +157,9 @@ impl FilmTable {
         inv_speed_scale: f32,
         (i, k): (usize, usize),
     ) {
-        let ln_load = node_ln_load(i);
-        let film = model.film(&ContactInput {
-            load_n: exp(ln_load),
-            ..*contact
-        });
-        let hydro = martin * exp(-ln_load);
+        let load_n = exp(node_ln_load(i));
+        let film = model.film(&ContactInput { load_n, ..*contact });
+        let hydro = martin / load_n;
         let central = ehl_part(film.central_m, hydro) * inv_speed_scale;
         let minimum =
             ehl_part(film.minimum_m, hydro * (MARTIN_MINIMUM / MARTIN_CENTRAL)) * inv_speed_scale;
@@ -170,6 +169,11 @@ impl FilmTable {
         if let Some(slot) = self.minimum.get_mut(k).and_then(|c| c.get_mut(i)) {
             *slot = minimum;
         }
+    }
+
+    /// The contact kind (0 inner, 1 outer) whose node the next `step` renews.
+    pub(crate) fn next_contact(&self) -> usize {
+        self.phase & 1
     }
 
     /// This step's films for contact templates `contacts` (inner, outer; loads ignored; they
@@ -230,7 +234,7 @@ impl FilmTable {
         StepFilms {
             table: self,
             speed_scale,
-            martin,
+            martin_per_scale: martin.map(|b| b * inv_speed_scale),
         }
     }
 }
@@ -244,28 +248,28 @@ impl StepFilms<'_> {
         let cell = Cell::at(ln_load);
         let mut total_m = 0.0;
         let mut slope_m = 0.0;
-        let mut central_m = [0.0; 2];
+        let mut central = [0.0; 2];
+        // In the table's units (films divided by u^κ), scaled once at the end.
         for ((nodes, &b), h_out) in self
             .table
             .central
             .iter()
-            .zip(self.martin.iter())
-            .zip(central_m.iter_mut())
+            .zip(self.martin_per_scale.iter())
+            .zip(central.iter_mut())
         {
             let (e, de) = cell.interpolate(nodes);
-            let (e, de) = (e * self.speed_scale, de * self.speed_scale);
-            let hydro_m = b * inv_load;
+            let hydro = b * inv_load;
             // e and h_RI are finite (table values, and B/Q with λ bracketed): no clamp needed.
-            let h = sqrt_non_negative(e * e + hydro_m * hydro_m);
+            let h = sqrt_non_negative(e * e + hydro * hydro);
             *h_out = h;
             total_m += h;
-            slope_m += (e * de - hydro_m * hydro_m) / max(h, 1.0e-30);
+            slope_m += (e * de - hydro * hydro) / max(h, 1.0e-30);
         }
         FilmSum {
-            total_m,
-            slope_m,
+            total_m: total_m * self.speed_scale,
+            slope_m: slope_m * self.speed_scale,
             inv_load,
-            central_m,
+            central,
             cell,
         }
     }
@@ -277,19 +281,20 @@ impl StepFilms<'_> {
     /// films add up to the root's sum. (The last Newton step is small, and this spares a
     /// second look-up in the table at the root.)
     pub(crate) fn contacts_from(&self, last: &FilmSum, total_m: f32) -> [(f32, f32); 2] {
+        // The ratio, and u^κ: `last.central` and the table are in the table's units.
         let scale = select(
             last.total_m > 0.0,
             total_m / max(last.total_m, 1.0e-30),
             0.0,
-        );
+        ) * self.speed_scale;
         let mut out = [(0.0, 0.0); 2];
         for (((o, minimum), &b), &central) in out
             .iter_mut()
             .zip(self.table.minimum.iter())
-            .zip(self.martin.iter())
-            .zip(last.central_m.iter())
+            .zip(self.martin_per_scale.iter())
+            .zip(last.central.iter())
         {
-            let hm = last.cell.interpolate(minimum).0 * self.speed_scale;
+            let hm = last.cell.interpolate(minimum).0;
             let hr_min = b * last.inv_load * (MARTIN_MINIMUM / MARTIN_CENTRAL);
             *o = (
                 central * scale,

@@ -19,9 +19,10 @@ pub use output::{BearingOutput, RollerOutput, StepStatus};
 
 use crate::contact::{ContactLaw, SlicedRoller};
 use crate::error::{in_range, Allowed, ParamError};
-use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis};
-use crate::math::{ln, sin_cos};
+use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis, ServedLoads};
+use crate::math::{ln, select, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
+use core::f32::consts::PI;
 use coupling::{finish_roller, prepare_roller, ContactContext, Prepared, RollerMemory};
 use film_table::FilmTable;
 use output::StiffnessSums;
@@ -107,6 +108,29 @@ const MIN_ENTRAINMENT_M_S: f32 = 1.0e-6;
 /// ln Q span of the film nodes before any step has loaded a roller: 10 N … 3 kN.
 const DEFAULT_LOAD_SPAN: (f32, f32) = (core::f32::consts::LN_10, 8.006_368);
 
+/// The logarithms of a contact's Moes groups that do not change with the speed.
+#[derive(Clone, Copy, Debug)]
+struct ContactLogs {
+    /// ln(E'·R).
+    ln_er: f32,
+    /// ln G = ln(α·E').
+    ln_g: f32,
+    /// ln(l·E'·R).
+    ln_ler: f32,
+}
+
+impl ContactLogs {
+    fn of(params: &BearingParams, outer: bool) -> Self {
+        let c = params.contact_input(outer, 0.0, 0.0);
+        let er = c.reduced_modulus_pa * c.reduced_radius_m;
+        Self {
+            ln_er: ln(er),
+            ln_g: ln(c.pressure_viscosity_pa_inv * c.reduced_modulus_pa),
+            ln_ler: ln(c.length_m * er),
+        }
+    }
+}
+
 /// A bearing of `Z` rollers with `S` slices each, with its warm start.
 #[derive(Clone, Debug)]
 pub struct Bearing<const Z: usize, const S: usize> {
@@ -114,6 +138,8 @@ pub struct Bearing<const Z: usize, const S: usize> {
     roller: SlicedRoller<S>,
     /// cos and sin of 2πj/Z, the roller positions relative to the cage, and 2πj/Z (rad).
     pitch: [(f32, f32, f32); Z],
+    /// Speed-independent logarithms of the inner and outer contact.
+    contact_logs: [ContactLogs; 2],
     /// What each roller carries to the next step: the warm start.
     memory: [RollerMemory; Z],
     /// ln Q of the lightest and heaviest loaded roller at the last step: where the next step
@@ -123,6 +149,8 @@ pub struct Bearing<const Z: usize, const S: usize> {
     table: FilmTable,
     /// The table has not been filled since `new` or `reset`: the next step fills all of it.
     table_stale: bool,
+    /// The loads the film model serves at each contact kind (inner, outer), as last renewed.
+    served: [ServedLoads; 2],
     output: BearingOutput<Z>,
 }
 
@@ -155,14 +183,20 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             let a = 2.0 * core::f32::consts::PI * j as f32 / Z as f32;
             *p = (libm::cosf(a), libm::sinf(a), a);
         }
+        let roller = SlicedRoller::new(&params.geometry, params.reduced_modulus_pa, params.law);
         Ok(Self {
-            roller: SlicedRoller::new(&params.geometry, params.reduced_modulus_pa, params.law),
+            roller,
+            contact_logs: [
+                ContactLogs::of(&params, false),
+                ContactLogs::of(&params, true),
+            ],
             params,
             pitch,
-            memory: [RollerMemory::default(); Z],
+            memory: [RollerMemory::cold(&roller); Z],
             load_span: DEFAULT_LOAD_SPAN,
             table: FilmTable::default(),
             table_stale: true,
+            served: [ServedLoads::everywhere(FilmSource::None); 2],
             output: BearingOutput::ZERO,
         })
     }
@@ -184,7 +218,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
 
     /// Forget the warm start (the next step starts from unloaded rollers).
     pub fn reset(&mut self) {
-        self.memory = [RollerMemory::default(); Z];
+        self.memory = [RollerMemory::cold(&self.roller); Z];
         self.load_span = DEFAULT_LOAD_SPAN;
         self.table_stale = true;
     }
@@ -192,7 +226,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     /// Per-step data of the two contacts (inner, outer).
     fn contact_contexts(&self, shaft_speed_rad_s: f32) -> [ContactContext; 2] {
         let p = &self.params;
-        let context = |outer: bool| {
+        let context = |(outer, logs): (bool, &ContactLogs)| {
             let mut template = p.contact_input(outer, 0.0, shaft_speed_rad_s);
             // Computed with a floor of 1 µm/s on the entrainment speed, so a shaft at standstill
             // runs the same arithmetic, on normal (not subnormal) numbers, as a turning one:
@@ -202,18 +236,19 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             // dry regimes and no film source at standstill.
             template.entrainment_speed_m_s =
                 crate::math::max(template.entrainment_speed_m_s, MIN_ENTRAINMENT_M_S);
-            let er = template.reduced_modulus_pa * template.reduced_radius_m;
             let speed = template.viscosity_pa_s * template.entrainment_speed_m_s;
-            let ln_2u = core::f32::consts::LN_2 + ln(speed) - ln(er);
-            let ln_g = ln(template.pressure_viscosity_pa_inv * template.reduced_modulus_pa);
+            let ln_2u = core::f32::consts::LN_2 + ln(speed) - logs.ln_er;
             ContactContext {
                 template,
                 martin: 6.0 * speed * template.reduced_radius_m * template.length_m,
-                ln_m_offset: ln(template.length_m * er) + 0.5 * ln_2u,
-                ln_l: ln_g + 0.25 * ln_2u,
+                ln_m_offset: logs.ln_ler + 0.5 * ln_2u,
+                ln_l: logs.ln_g + 0.25 * ln_2u,
             }
         };
-        [context(false), context(true)]
+        [
+            context((false, &self.contact_logs[0])),
+            context((true, &self.contact_logs[1])),
+        ]
     }
 
     /// One lubricated step: roller films from `film`, film-coupled loads, forces, stiffness.
@@ -253,10 +288,11 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             .geometry
             .entrainment_speed_m_s(state.shaft_speed_rad_s)
             > 0.0;
+        let film_shown = if lubricated { 1.0 } else { 0.0 };
         let templates = [inner.template, outer.template];
         // At standstill every contact reports no film source: an interval covering every load
         // with source `None`, chosen field by field so that no roller takes a branch.
-        let standstill = |s: crate::film::ServedLoads| crate::film::ServedLoads {
+        let standstill = |s: ServedLoads| ServedLoads {
             ln_load_min: crate::math::select(lubricated, s.ln_load_min, f32::MIN),
             ln_load_max: crate::math::select(lubricated, s.ln_load_max, f32::MAX),
             source: [FilmSource::None, s.source]
@@ -264,10 +300,20 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 .copied()
                 .unwrap_or(FilmSource::None),
         };
-        let served = [
-            standstill(film.served_loads(&templates[0])),
-            standstill(film.served_loads(&templates[1])),
-        ];
+        // The loads the film model serves follow the speed. They are renewed with the table,
+        // for one contact per step (the one whose node this step renews; both when the whole
+        // table is), so a contact's interval is at most a step old.
+        // One code path whichever contact it is (an index, not a branch per contact: with
+        // the regression's trivial interval, the two branches differed by an instruction).
+        let renewed = self.table.next_contact();
+        if renew_all {
+            self.served = templates.map(|t| film.served_loads(&t));
+        } else if let (Some(slot), Some(template)) =
+            (self.served.get_mut(renewed), templates.get(renewed))
+        {
+            *slot = film.served_loads(template);
+        }
+        let served = self.served.map(standstill);
         let martin = [inner.martin, outer.martin];
         let films = self
             .table
@@ -324,13 +370,16 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 let r = finish_roller(&p, &films, &regime_axes, memory);
                 let loaded = r.load.load_n >= 1.0;
                 span = (
-                    crate::math::select(loaded, crate::math::min(span.0, r.ln_load), span.0),
-                    crate::math::select(loaded, crate::math::max(span.1, r.ln_load), span.1),
+                    crate::math::min(span.0, crate::math::select(loaded, r.ln_load, f32::MAX)),
+                    crate::math::max(span.1, crate::math::select(loaded, r.ln_load, f32::MIN)),
                 );
                 let [(central_in, min_in), (central_out, min_out)] = r.films;
                 let s0 = r.load.stiffness_n_per_m;
-                let coupling = r.film_slope_m_per_n / (1.0 - s0 * r.film_slope_m_per_n);
-                let shown = |h: f32| crate::math::select(lubricated, h, 0.0);
+                // 1/(1 − K·dH/dQ) ≥ 1 (dH/dQ ≤ 0): film coupling and roller stiffness share it.
+                let softening = 1.0 / (1.0 - s0 * r.film_slope_m_per_n);
+                let coupling = r.film_slope_m_per_n * softening;
+                // Films are finite: hidden at standstill by a factor 0 or 1.
+                let shown = |h: f32| h * film_shown;
                 // A table, not an `if`: the work must not depend on the speed.
                 let shown_regime = |r: Regime| {
                     [Regime::Dry, r]
@@ -344,7 +393,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                     central_film_out_m: shown(central_out),
                     min_film_in_m: shown(min_in),
                     min_film_out_m: shown(min_out),
-                    roller_stiffness_n_per_m: s0 / (1.0 - s0 * r.film_slope_m_per_n),
+                    roller_stiffness_n_per_m: s0 * softening,
                     regime_in: shown_regime(r.regimes[0]),
                     regime_out: shown_regime(r.regimes[1]),
                     film_source_in: served[0].source_at(r.ln_load),
@@ -484,9 +533,9 @@ impl<const Z: usize, const S: usize> Parts<'_, Z, S> {
         // is a kilobyte and a half, and a copy of it costs as much as a roller).
         out.force_n = [0.0; 2];
         out.moment_nm = [0.0; 2];
-        out.damping_n_s_per_m = [[0.0; 2]; 2];
         out.status = StepStatus::Ok;
         let mut stiffness = StiffnessSums::default();
+        let cage_angle = wrap_angle(state.cage_angle_rad);
         for (j, ((&(_, _, pitch_angle), place), (slot, roller_memory))) in self
             .pitch
             .iter()
@@ -514,12 +563,9 @@ impl<const Z: usize, const S: usize> Parts<'_, Z, S> {
                 ],
                 coupling,
             );
-            let cd = damping * load.stiffness_n_per_m;
-            out.damping_n_s_per_m[0][0] += cd * c * c;
-            out.damping_n_s_per_m[0][1] += cd * c * s;
-            out.damping_n_s_per_m[1][0] += cd * c * s;
-            out.damping_n_s_per_m[1][1] += cd * s * s;
-            roller.angle_rad = wrap_angle(state.cage_angle_rad + pitch_angle);
+            // θ_c ∈ [−π, π] plus 2πj/Z ∈ [0, 2π): one turn back at most.
+            let angle = cage_angle + pitch_angle;
+            roller.angle_rad = angle - select(angle > PI, 2.0 * PI, 0.0);
             roller.geometric_approach_m = geometric;
             roller.load_n = load.load_n;
             roller.damping_force_n = damping_force;
@@ -528,6 +574,7 @@ impl<const Z: usize, const S: usize> Parts<'_, Z, S> {
             *slot = roller;
         }
         out.stiffness = stiffness.matrix();
+        out.damping_n_s_per_m = stiffness.damping(damping);
     }
 }
 

@@ -139,6 +139,8 @@ pub(crate) struct StiffnessSums {
     a: [f32; 3],
     b: [f32; 3],
     c: [f32; 3],
+    /// Σ S₀·(c², cs, s²): the contact stiffness alone, which the damping follows.
+    contact: [f32; 3],
 }
 
 impl StiffnessSums {
@@ -161,6 +163,16 @@ impl StiffnessSums {
             *sb += b * t;
             *sc += cc * t;
         }
+        for (d, t) in self.contact.iter_mut().zip(trig) {
+            *d += s0 * t;
+        }
+    }
+
+    /// The damping matrix f_damp·Σ K_j·(c², cs; cs, s²) of damping factor f_damp (s): each
+    /// roller's viscous force f_damp·K_j·δ̇_j along its direction.
+    pub(crate) fn damping(&self, damping_factor_s: f32) -> [[f32; 2]; 2] {
+        let [cc, cs, ss] = self.contact.map(|v| damping_factor_s * v);
+        [[cc, cs], [cs, ss]]
     }
 
     /// −∂(F_x, F_y, M_x, M_y)/∂(x, y, tilt_x, tilt_y).

@@ -126,24 +126,18 @@ impl RegimeAxis {
         }
     }
 
-    /// The regime at λ = ln Q (Dry for a non-finite λ or axis).
+    /// The regime at λ = ln Q (Dry for a NaN λ or a non-finite axis). Arithmetic on the
+    /// comparisons' flags, as in `from_flags`: choosing between small integers with an `if`
+    /// let the compiler branch, and a step's instruction count then depended on its rollers'
+    /// regimes (by one instruction; the firmware's determinism test caught it).
     #[inline(always)]
     pub fn at(&self, ln_load: f32) -> Regime {
-        // Conditional moves on small integers (the table index of `from_flags`); a NaN λ fails
-        // every comparison, which the last one catches.
-        let piezo = 3 + u8::from(ln_load >= self.elastic_piezo_from);
-        let iso = 2 - u8::from(ln_load <= self.rigid_iso_to);
-        let index = if ln_load >= self.piezoviscous_from {
-            piezo
-        } else {
-            iso
-        };
-        let defined = self.defined & !ln_load.is_nan();
-        let index = if defined { index } else { 0 };
-        REGIMES
-            .get(usize::from(index))
-            .copied()
-            .unwrap_or(Regime::Dry)
+        Regime::from_flags(
+            self.defined & !ln_load.is_nan(),
+            ln_load >= self.piezoviscous_from,
+            ln_load >= self.elastic_piezo_from,
+            ln_load <= self.rigid_iso_to,
+        )
     }
 }
 
