@@ -10,6 +10,7 @@
 pub mod kernel;
 pub mod outputs;
 pub mod qemu;
+pub mod realtime;
 pub mod reference;
 pub mod replay;
 pub mod trace;

@@ -66,6 +66,7 @@ fn a_trace_at_static_equilibrium_replays_to_the_applied_load() {
         paced: false,
         limits: Limits::default(),
         min_reference_force_n: 1.0,
+        realtime: None,
     };
     let run = replay(
         &trace,

@@ -3,6 +3,7 @@
 
 use super::check_range;
 use anyhow::{anyhow, Context, Result};
+use bearing_hil::realtime::Realtime;
 use bearing_hil::replay::engine::Parts;
 use bearing_hil::replay::report::ReplayReport;
 use bearing_hil::replay::stats::Limits;
@@ -42,6 +43,16 @@ pub struct ReplayArgs {
     /// Print the JSON report instead of the markdown summary.
     #[arg(long)]
     pub json: bool,
+    /// Run the timed loop as a real-time thread: SCHED_FIFO, pinned to one CPU, memory
+    /// locked (Linux; needs root or CAP_SYS_NICE). The accuracy pass runs normally after it.
+    #[arg(long)]
+    pub realtime: bool,
+    /// CPU of the timed loop under --realtime; default: the last one.
+    #[arg(long, requires = "realtime")]
+    pub rt_cpu: Option<usize>,
+    /// SCHED_FIFO priority under --realtime (1–99).
+    #[arg(long, requires = "realtime", default_value_t = 80)]
+    pub rt_priority: i32,
 }
 
 /// Runs the replay; exit status 2 when the budget or the accuracy limits are missed.
@@ -80,6 +91,13 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
             ..Limits::default()
         },
         min_reference_force_n: 1.0,
+        realtime: args.realtime.then(|| {
+            let default = Realtime::default_for_this_machine();
+            Realtime {
+                cpu: args.rt_cpu.unwrap_or(default.cpu),
+                priority: args.rt_priority,
+            }
+        }),
     };
     let points = if args.reference_every == 0 || product.reference.is_none() {
         0

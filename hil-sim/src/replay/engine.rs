@@ -13,6 +13,7 @@
 
 use super::stats::Limits;
 use super::{AccuracyReference, BearingStepper, FilmSource, StepFault, StepOutputs};
+use crate::realtime::{Guard, Realtime};
 use crate::trace::{Sample, Trace};
 use std::fmt;
 use std::hint::black_box;
@@ -32,6 +33,8 @@ pub struct ReplayConfig {
     /// Force errors are only taken where the reference force is at least this large (N), because
     /// a relative error of a force crossing zero says nothing about the model.
     pub min_reference_force_n: f64,
+    /// Run the timed loop under real-time scheduling (`crate::realtime`).
+    pub realtime: Option<Realtime>,
 }
 
 /// The models a replay drives.
@@ -129,6 +132,8 @@ pub struct ReplayRun {
     pub dry_force_errors: Vec<f64>,
     /// Film sources over all steps and contacts.
     pub sources: SourceCounts,
+    /// The real-time scheduling the timed loop ran under, if any.
+    pub realtime: Option<Realtime>,
 }
 
 /// A replay that could not finish.
@@ -184,6 +189,16 @@ pub fn replay(
     let mut step_times_ns = vec![0u64; n];
     let mut outputs = vec![StepOutputs::default(); n];
     let mut pacing = config.paced.then(Pacing::default);
+    // Real-time scheduling for the timed loop alone (dropped before the accuracy pass).
+    let realtime = config
+        .realtime
+        .map(Guard::enter)
+        .transpose()
+        .map_err(|reason| ReplayError {
+            index: 0,
+            stage: "real-time scheduling",
+            fault: StepFault { reason },
+        })?;
     let start = Instant::now();
     for (index, ((sample, time), out)) in trace
         .samples
@@ -218,6 +233,7 @@ pub fn replay(
     if let Some(p) = pacing.as_mut() {
         p.wall_s = start.elapsed().as_secs_f64();
     }
+    drop(realtime);
 
     let mut sources = SourceCounts::default();
     for out in &outputs {
@@ -237,6 +253,7 @@ pub fn replay(
         force_errors: Vec::new(),
         dry_force_errors: Vec::new(),
         sources,
+        realtime: config.realtime,
     };
     accuracy_pass(trace, parts, config, progress, &mut run)?;
     Ok(run)

@@ -2,13 +2,15 @@
 //!
 //! JSON keys (issue 6 §4): `steps`, `step_time_ns{min,median,p99,p999,max}`, `budget_ok`,
 //! `accuracy_ok`, `film_rel_err_p99`, `force_rel_err_p99`, `dry_force_rel_err_p99`,
-//! `network_fraction`, plus context (trace, film model, limits, pacing, reasons). Accuracy keys
+//! `network_fraction`, plus `steps_over_budget` and context (trace, film model, limits, pacing,
+//! the real-time scheduling of the timed loop, reasons). Accuracy keys
 //! are `null` when no reference ran (`--reference-every 0` or no reference available):
 //! nothing was checked, which is not the same as a pass.
 
 use super::engine::{Pacing, ReplayConfig, ReplayRun, SourceCounts};
 use super::stats::{accuracy_verdict, budget_verdict, percentile, Limits, StepTimeStats};
 use super::FilmChoice;
+use crate::realtime::Realtime;
 use crate::trace::TraceMeta;
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -23,6 +25,8 @@ pub struct ReplayReport {
     pub step_time_ns: StepTimeStats,
     /// p99.9 step time within the budget.
     pub budget_ok: bool,
+    /// Steps longer than the budget (the p99.9 verdict allows one in a thousand).
+    pub steps_over_budget: usize,
     /// Film and force errors within the limits; `null` when not checked.
     pub accuracy_ok: Option<bool>,
     /// 99th-percentile relative error of the central film of loaded contacts.
@@ -55,6 +59,9 @@ pub struct ReplayReport {
     pub film_contacts_compared: usize,
     /// Deadline statistics, when paced.
     pub pacing: Option<Pacing>,
+    /// The real-time scheduling of the timed loop (`--realtime`): CPU and SCHED_FIFO priority;
+    /// `null` under the ordinary policy.
+    pub realtime: Option<Realtime>,
     /// Why the replay failed (empty when it passed).
     pub reasons: Vec<String>,
 }
@@ -94,6 +101,11 @@ impl ReplayReport {
             steps: run.step_times_ns.len(),
             step_time_ns,
             budget_ok,
+            steps_over_budget: run
+                .step_times_ns
+                .iter()
+                .filter(|&&t| t as f64 > config.limits.budget_us * 1e3)
+                .count(),
             accuracy_ok,
             film_rel_err_p99: film_p99,
             force_rel_err_p99: force_p99,
@@ -110,6 +122,7 @@ impl ReplayReport {
             reference_points: run.points.len(),
             film_contacts_compared: run.film_errors.len(),
             pacing: run.pacing,
+            realtime: run.realtime,
             reasons,
         })
     }
@@ -157,10 +170,27 @@ impl ReplayReport {
         );
         let _ = writeln!(
             md,
-            "Budget {} µs at p99.9: **{}**.\n",
+            "Budget {} µs at p99.9: **{}** ({} of {} steps over it).\n",
             self.limits.budget_us,
-            verdict(Some(self.budget_ok))
+            verdict(Some(self.budget_ok)),
+            self.steps_over_budget,
+            self.steps
         );
+        match &self.realtime {
+            Some(r) => {
+                let _ = writeln!(
+                    md,
+                    "Timed loop under SCHED_FIFO priority {} on CPU {}, memory locked.\n",
+                    r.priority, r.cpu
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    md,
+                    "Timed loop under the ordinary scheduling policy (`--realtime` pins it to a CPU under SCHED_FIFO).\n"
+                );
+            }
+        }
         if let Some(p) = &self.pacing {
             let _ = writeln!(
                 md,

@@ -7,7 +7,7 @@
 //! their difference is f32 rounding (≈ 1e-6 relative): an independent check that the engine
 //! pairs each step with the reference of the same state, rollers and contacts.
 
-use super::engine::{replay, Parts, ReplayConfig};
+use super::engine::{replay, Parts, ReplayConfig, ReplayError, ReplayRun};
 use super::report::ReplayReport;
 use super::stats::{budget_verdict, percentile, Limits, StepTimeStats};
 use super::*;
@@ -167,7 +167,26 @@ fn config(reference_every: usize, paced: bool, rate: f64) -> ReplayConfig {
         paced,
         limits: Limits::default(),
         min_reference_force_n: 1.0,
+        realtime: None,
     }
+}
+
+/// Replays `trace` through `stepper` alone (no reference, no dry model, no progress bar).
+fn replay_stepper_only(
+    trace: &Trace,
+    stepper: &mut dyn BearingStepper,
+    config: &ReplayConfig,
+) -> Result<ReplayRun, ReplayError> {
+    replay(
+        trace,
+        Parts {
+            stepper,
+            reference: None,
+            dry: None,
+        },
+        config,
+        None,
+    )
 }
 
 /// Reference: the nearest-rank definition worked by hand on 1..=1000.
@@ -311,17 +330,7 @@ fn without_reference_accuracy_is_not_checked() {
     let trace = trace(50, 10_000.0);
     let mut stepper = ClosedFormStepper::new(true);
     let cfg = config(0, false, 10_000.0);
-    let run = replay(
-        &trace,
-        Parts {
-            stepper: &mut stepper,
-            reference: None,
-            dry: None,
-        },
-        &cfg,
-        None,
-    )
-    .unwrap();
+    let run = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap();
     let report =
         ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
     assert_eq!(report.accuracy_ok, None);
@@ -390,4 +399,55 @@ fn paced_replay_runs_at_wall_clock_rate() {
     )
     .unwrap();
     assert!(run.pacing.unwrap().wall_s >= 0.039);
+}
+
+/// `--realtime`: the timed loop runs under SCHED_FIFO on the requested CPU and the thread is
+/// back under its own policy and CPU set afterwards; where the process may not (not root, no
+/// CAP_SYS_NICE), the replay refuses with the reason instead of timing under the wrong policy.
+#[cfg(target_os = "linux")]
+#[test]
+fn realtime_scheduling_covers_the_timed_loop_only() {
+    use crate::realtime::Realtime;
+    let trace = trace(50, 10_000.0);
+    let mut stepper = ClosedFormStepper::new(true);
+    let request = Realtime {
+        cpu: 0,
+        priority: 10,
+    };
+    let cfg = ReplayConfig {
+        realtime: Some(request),
+        ..config(0, false, 10_000.0)
+    };
+    // SAFETY: reads of the calling thread's scheduling policy.
+    let policy_before = unsafe { libc::sched_getscheduler(0) };
+    let result = replay_stepper_only(&trace, &mut stepper, &cfg);
+    match result {
+        Ok(run) => {
+            assert_eq!(run.realtime, Some(request));
+            let report =
+                ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run)
+                    .unwrap();
+            assert_eq!(report.realtime, Some(request));
+            assert!(report
+                .markdown()
+                .contains("SCHED_FIFO priority 10 on CPU 0"));
+        }
+        Err(e) => {
+            assert_eq!(e.stage, "real-time scheduling");
+            assert!(e.fault.reason.contains("CAP_SYS_NICE"), "{e}");
+        }
+    }
+    // SAFETY: as above.
+    assert_eq!(unsafe { libc::sched_getscheduler(0) }, policy_before);
+    assert_ne!(policy_before, libc::SCHED_FIFO);
+    // A CPU that does not exist is refused before anything changes.
+    let cfg = ReplayConfig {
+        realtime: Some(Realtime {
+            cpu: 1 << 20,
+            priority: 10,
+        }),
+        ..config(0, false, 10_000.0)
+    };
+    let e = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap_err();
+    assert!(e.fault.reason.contains("does not exist"), "{e}");
 }
