@@ -4,7 +4,7 @@
 //! the accuracy targets on its held-out test set.
 //!
 //! The core holds the model trained on numerical EHL solutions (`data/ann/numerical_*`, Roelands +
-//! Dowson–Higginson, 801 nodes; 800 cases, 620 solved, 180 recorded failures). The
+//! Dowson–Higginson, 801 nodes; 5000 cases, all solved; see `data/ann/README.md`). The
 //! pipeline model trained on the Moes stand-in (`data/ann/pipeline_moes_*`) is checked on the
 //! host against its closed-form reference.
 
@@ -104,7 +104,7 @@ fn core_int_within_bounds_of_f32() {
     }
 }
 
-/// The accuracy targets on the held-out numerical test set (93 cases), core models:
+/// The accuracy targets on the held-out numerical test set (750 cases), core models:
 /// central film R² ≥ 0.9995, median ≤ 0.5 %, p99 ≤ 2 %, max ≤ 5 %; minimum film with twice
 /// the error bounds; every test case served by the network, not the fallback.
 #[test]
@@ -121,12 +121,18 @@ fn numerical_model_meets_accuracy_targets() {
     for films in [core_films(&AnnF32, &te), core_films(&AnnInt, &te)] {
         let e = Metrics::of(&films, &te.films);
         assert!(
-            e.central.r2 >= 0.9995 && e.central.median_pct <= 0.5 && e.central.max_pct <= 5.0,
+            e.central.r2 >= 0.9995
+                && e.central.median_pct <= 0.5
+                && e.central.p99_pct <= 2.0
+                && e.central.max_pct <= 5.0,
             "{:?}",
             e.central
         );
         assert!(
-            e.minimum.r2 >= 0.9995 && e.minimum.median_pct <= 1.0 && e.minimum.max_pct <= 10.0,
+            e.minimum.r2 >= 0.9995
+                && e.minimum.median_pct <= 1.0
+                && e.minimum.p99_pct <= 4.0
+                && e.minimum.max_pct <= 10.0,
             "{:?}",
             e.minimum
         );

@@ -128,6 +128,28 @@ pub fn run_sweep(samples: &Samples, config: &SweepConfig, progress: bool) -> Vec
     rows
 }
 
+/// The paragraph above the table: what was trained and how, so that a capped run (fewer
+/// epochs than the published 1000) says so where the numbers are read.
+pub fn heading(config: &SweepConfig, dataset: &str) -> String {
+    let b = &config.base;
+    let kebab = |v: Option<clap::builder::PossibleValue>| {
+        v.map(|p| p.get_name().to_string()).unwrap_or_default()
+    };
+    format!(
+        "Architecture sweep on `{dataset}`: inputs `{}`, target `{}`, weight decay λ = {:e}, \
+         at most {} Levenberg–Marquardt epochs, early-stopping patience {}, {} restart(s), \
+         seed {}. Each network is trained on the first N solved records (its own 70/15/15 \
+         split) and measured on its held-out test set; `time s` is the training wall time.\n",
+        kebab(clap::ValueEnum::to_possible_value(&b.inputs)),
+        kebab(clap::ValueEnum::to_possible_value(&b.target)),
+        b.regularisation,
+        b.max_epochs,
+        b.patience,
+        b.restarts,
+        b.seed
+    )
+}
+
 /// Markdown table of the rows.
 pub fn markdown(rows: &[SweepRow]) -> String {
     let mut s = String::from(
@@ -155,4 +177,38 @@ pub fn markdown(rows: &[SweepRow]) -> String {
         ));
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ann::features::InputSet;
+
+    /// The full grid is the published one (4 × 3 × 3 × 4 = 144 networks); the heading states
+    /// the epoch cap, inputs and restarts the table was made with.
+    #[test]
+    fn full_grid_and_heading() {
+        let base = TrainOptions {
+            inputs: InputSet::WugEtaModulus,
+            max_epochs: 12,
+            ..TrainOptions::default()
+        };
+        let c = SweepConfig::full(base);
+        let networks =
+            c.layers.len() * c.neurons.len() * c.activations.len() * c.sample_sizes.len();
+        assert_eq!(networks, 144);
+        assert_eq!(c.sample_sizes, vec![600, 1000, 2000, 5000]);
+        let h = heading(&c, "data/x.jsonl");
+        for part in [
+            "`data/x.jsonl`",
+            "inputs `wug-eta-modulus`",
+            "target `log-ratio`",
+            "at most 12 Levenberg–Marquardt epochs",
+            "patience 6",
+            "1 restart(s)",
+        ] {
+            assert!(h.contains(part), "{part:?} missing from {h:?}");
+        }
+        assert!(heading(&SweepConfig::quick(TrainOptions::default()), "d").contains("at most 100 "));
+    }
 }

@@ -12,7 +12,7 @@ use bearing_host::ann::metrics::Metrics;
 use bearing_host::ann::mlp::Activation;
 use bearing_host::ann::model::{CoreReport, ModelFile};
 use bearing_host::ann::pipeline::{load_samples, split_samples, train_model};
-use bearing_host::ann::sweep::{markdown, run_sweep, SweepConfig};
+use bearing_host::ann::sweep::{heading, markdown, run_sweep, SweepConfig};
 use bearing_host::ann::train::TrainOptions;
 use clap::{Args, Subcommand};
 
@@ -108,7 +108,9 @@ struct SweepArgs {
     /// Dataset file.
     #[arg(long)]
     data: PathBuf,
-    /// CI subset (1–2 layers × {10, 14} × tanh/ReLU × 600 samples, ≤ 100 epochs).
+    /// CI subset (1–2 layers × {10, 14} × tanh/ReLU × 600 samples, ≤ 100 epochs); without it
+    /// the full published grid (1–4 layers × {10, 15, 20} × tanh/logistic/ReLU ×
+    /// {600, 1000, 2000, 5000} samples).
     #[arg(long)]
     quick: bool,
     /// Comma-separated sample counts (overrides the grid's).
@@ -260,7 +262,11 @@ fn sweep(args: SweepArgs) -> Result<()> {
             samples.len()
         );
     }
-    let md = markdown(&rows);
+    let md = format!(
+        "{}\n{}",
+        heading(&config, &args.data.display().to_string()),
+        markdown(&rows)
+    );
     std::fs::write(&args.out_md, &md)
         .with_context(|| format!("writing {}", args.out_md.display()))?;
     std::fs::write(
