@@ -6,5 +6,6 @@ pub mod ann;
 pub mod config;
 pub mod dataset;
 pub mod ehl;
+pub mod plot_style;
 pub mod rolling;
 pub mod shaft;

@@ -5,6 +5,7 @@
 use super::engine::ReplayRun;
 use super::stats::percentile_sorted;
 use crate::trace::Trace;
+use bearing_host::plot_style::draw_legend;
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -166,11 +167,7 @@ pub fn error_along_trace(path: &Path, run: &ReplayRun) -> PlotResult {
             .label(label)
             .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2)));
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()?;
+    draw_legend(&mut chart, SeriesLabelPosition::MiddleRight)?;
     root.present()?;
     Ok(())
 }

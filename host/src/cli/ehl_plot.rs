@@ -2,6 +2,7 @@
 
 use anyhow::{anyhow, Result};
 use bearing_host::ehl::EhlSolution;
+use bearing_host::plot_style::draw_legend;
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -53,13 +54,7 @@ pub fn plot(s: &EhlSolution, path: &Path) -> Result<()> {
         .map_err(|e| anyhow!("{e}"))?
         .label("Hertz")
         .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 20, b)], RED));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()
-        .map_err(|e| anyhow!("{e}"))?;
+    draw_legend(&mut chart, SeriesLabelPosition::UpperLeft).map_err(|e| anyhow!("{e}"))?;
 
     let scale = s.case.film_scale_m() * 1e6;
     let film: Vec<(f64, f64)> = x

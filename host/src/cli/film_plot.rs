@@ -5,6 +5,7 @@ use super::film::numerical_solution;
 use anyhow::{anyhow, Result};
 use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::{ContactInput, FilmModel, FilmSource, Regression};
+use bearing_host::plot_style::draw_legend;
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -153,13 +154,7 @@ pub fn plot(
             }))
             .map_err(e)?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()
-        .map_err(e)?;
+    draw_legend(&mut chart, SeriesLabelPosition::UpperRight).map_err(e)?;
 
     // Relative errors against the numerical solution, where it converged.
     let errors: Vec<(usize, f64, f64)> = data
