@@ -186,7 +186,7 @@ struct Solved {
 /// from a start, on the log ratio Φ(λ) = ln D − ln H with D = δ_off − δ_geo +
 /// s·e^((λ − λ_ref)/n) the elastic approach still missing. Both sides are close to linear in λ
 /// (EHL: ln H ≈ −0.1λ, hydrodynamic: ln H ≈ −λ; ln D ≈ λ/n once loaded), so Newton converges
-/// in a few steps from anywhere in the bracket kept from `lower_bound`; Φ' > 0 throughout.
+/// in a few steps from anywhere in the bracket it keeps; Φ' > 0 throughout.
 /// The step is taken on 2·sinh(Φ/2), which needs no logarithm ([`Newton::iterate`]). The film
 /// sum at the returned λ is the last evaluation continued by its tangent (second-order
 /// accurate, and free).
@@ -210,9 +210,8 @@ pub(crate) struct Newton {
 }
 
 impl Newton {
-    fn new(law: &PowerLaw, geometric_approach_m: f32, start: f32, lower_bound: f32) -> Self {
-        let lo = max(lower_bound, LN_LOAD_MIN);
-        let hi = LN_LOAD_MAX;
+    fn new(law: &PowerLaw, geometric_approach_m: f32, start: f32) -> Self {
+        let (lo, hi) = (LN_LOAD_MIN, LN_LOAD_MAX);
         let lam = select((start > lo) & (start < hi), start, lo + 0.5);
         Self {
             gap: geometric_approach_m - law.offset_m,
@@ -324,7 +323,7 @@ pub(crate) fn prepare_roller<const S: usize>(
         approach1,
         r1,
         law: law1,
-        newton: Newton::new(&law1, geometric_approach_m, start, LN_LOAD_MIN),
+        newton: Newton::new(&law1, geometric_approach_m, start),
     }
 }
 

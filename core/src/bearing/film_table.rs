@@ -201,7 +201,7 @@ impl FilmTable {
             }
         } else {
             for _ in 0..REFRESHES_PER_STEP {
-                let contact = self.phase & 1;
+                let contact = self.next_contact();
                 let cursor = self.phase >> 1;
                 // The node range of this cursor: the loaded range or the whole table.
                 let last = TABLE_NODES - 1;

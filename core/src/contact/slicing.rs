@@ -7,11 +7,11 @@
 
 use super::law::{BoundLaw, ContactLaw, MAX_APPROACH_M};
 use crate::math::{max, min, ninth_root_in_range, select};
+use crate::params::BearingGeometry;
 
 /// Largest roller tilt the slice pass evaluates (rad): twice the largest the operating state
-/// admits (`params::operating::MAX_TILT_RAD`), which a roller sees as tilt_y·cos θ − tilt_x·sin θ.
-const MAX_TILT_RAD: f32 = 0.02;
-use crate::params::BearingGeometry;
+/// admits, which a roller sees as tilt_y·cos θ − tilt_x·sin θ.
+const MAX_TILT_RAD: f32 = 2.0 * crate::params::MAX_TILT_RAD;
 
 /// Load state of one roller, with the slice sums the stiffness matrix needs.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

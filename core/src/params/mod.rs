@@ -13,3 +13,4 @@ pub use geometry::{BearingGeometry, Crown};
 pub use lubricant::Lubricant;
 pub use material::{reduced_modulus, Material};
 pub use operating::OperatingState;
+pub(crate) use operating::MAX_TILT_RAD;
