@@ -286,9 +286,24 @@ pub(crate) struct Prepared {
     pub newton: Newton,
 }
 
+/// The approach at which a roller's one slice pass runs: the geometric approach `δ_geo` (m)
+/// plus the film the roller's memory predicts there. The film changes little from step to
+/// step (EHL: ∝ Q^−0.1), and what it does change moves the approach by a fraction of the
+/// film; the change is predicted to first order from its sensitivity at the last step.
+#[inline(always)]
+pub(crate) fn predicted_approach(geometric_approach_m: f32, memory: &RollerMemory) -> f32 {
+    let predicted_film = max(
+        memory.film_m
+            + memory.film_sensitivity * (geometric_approach_m - memory.geometric_approach_m),
+        0.0,
+    );
+    geometric_approach_m + predicted_film
+}
+
 /// Prepare one roller at geometric approach `δ_geo` (m) and tilt `ψ` (rad) from its memory of
-/// the last step: the slice pass and the power law; the caller then iterates `newton`
-/// [`NEWTON_ITERATIONS`] times and calls [`finish_roller`].
+/// the last step: the slice pass at [`predicted_approach`] and the power law
+/// ([`prepare_sliced`]); the caller then iterates `newton` [`NEWTON_ITERATIONS`] times and
+/// calls [`finish_roller`].
 #[inline(always)]
 pub(crate) fn prepare_roller<const S: usize>(
     roller: &SlicedRoller<S>,
@@ -296,23 +311,29 @@ pub(crate) fn prepare_roller<const S: usize>(
     tilt_rad: f32,
     memory: &RollerMemory,
 ) -> Prepared {
-    // 1. The one slice pass, at the approach the last step's film predicts: the film changes
-    //    little from step to step (EHL: ∝ Q^−0.1), and what it does change moves the approach
-    //    by a fraction of the film.
-    //    The film's change is predicted to first order from its sensitivity at the last step.
-    let predicted_film = max(
-        memory.film_m
-            + memory.film_sensitivity * (geometric_approach_m - memory.geometric_approach_m),
-        0.0,
-    );
-    let approach1 = geometric_approach_m + predicted_film;
-    let r1 = roller.evaluate(approach1, tilt_rad);
-    // 2. A whole-roller power law through the slices there (matching load, stiffness and
-    //    curvature: its error is third order in the approach's step from `approach1`), and the
-    //    film–load equation on it. Load and moment follow the law.
-    //    Where the slices carry nothing at `approach1` (a light roller whose film was
-    //    over-predicted), the last step's law stands in (before the first step, the cold
-    //    memory's).
+    let approach1 = predicted_approach(geometric_approach_m, memory);
+    prepare_sliced(
+        roller.evaluate(approach1, tilt_rad),
+        approach1,
+        geometric_approach_m,
+        memory,
+    )
+}
+
+/// [`prepare_roller`] after its slice pass: the slices' load `r1` at `approach1` (m).
+#[inline(always)]
+pub(crate) fn prepare_sliced(
+    r1: RollerLoad,
+    approach1: f32,
+    geometric_approach_m: f32,
+    memory: &RollerMemory,
+) -> Prepared {
+    // A whole-roller power law through the slices there (matching load, stiffness and
+    // curvature: its error is third order in the approach's step from `approach1`), and the
+    // film–load equation on it. Load and moment follow the law.
+    // Where the slices carry nothing at `approach1` (a light roller whose film was
+    // over-predicted), the last step's law stands in (before the first step, the cold
+    // memory's).
     let law1 = PowerLaw::fit(&r1, approach1, &memory.law);
     // From the slices' load where they carry one, else from the last step's; before the first
     // step a little above it.

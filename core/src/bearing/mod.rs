@@ -23,7 +23,10 @@ use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis, Serve
 use crate::math::{ln, select, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use core::f32::consts::PI;
-use coupling::{finish_roller, prepare_roller, ContactContext, Prepared, RollerMemory};
+use coupling::{
+    finish_roller, predicted_approach, prepare_roller, prepare_sliced, ContactContext, Prepared,
+    RollerMemory,
+};
 use film_table::FilmTable;
 use output::StiffnessSums;
 
@@ -336,12 +339,28 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         // either way, so are the results, bit for bit (`hil-sim qemu` compares them).
         let mut prepared = [Prepared::default(); Z];
         if LOCKSTEP {
-            for ((p, place), memory) in prepared
+            // The slice passes of all rollers together, in SIMD lanes.
+            let mut approach1 = [0.0f32; Z];
+            let mut tilt = [0.0f32; Z];
+            for (((a, t), place), memory) in approach1
                 .iter_mut()
+                .zip(tilt.iter_mut())
                 .zip(places.iter())
                 .zip(self.memory.iter())
             {
-                *p = prepare_roller(&self.roller, place.geometric_m, place.tilt_rad, memory);
+                *a = predicted_approach(place.geometric_m, memory);
+                *t = place.tilt_rad;
+            }
+            let mut sliced = [crate::contact::RollerLoad::default(); Z];
+            self.roller.evaluate_many(&approach1, &tilt, &mut sliced);
+            for ((((p, place), memory), &a), &r1) in prepared
+                .iter_mut()
+                .zip(places.iter())
+                .zip(self.memory.iter())
+                .zip(approach1.iter())
+                .zip(sliced.iter())
+            {
+                *p = prepare_sliced(r1, a, place.geometric_m, memory);
             }
             for _ in 0..NEWTON_ITERATIONS {
                 for p in prepared.iter_mut() {

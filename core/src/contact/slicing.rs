@@ -9,6 +9,10 @@ use super::law::{BoundLaw, ContactLaw, MAX_APPROACH_M};
 use crate::math::{max, min, ninth_root_in_range, select};
 use crate::params::BearingGeometry;
 
+/// Rollers per pass of [`SlicedRoller::evaluate_many`]: four f32 lanes fill an SSE/NEON
+/// register.
+const LANES: usize = 4;
+
 /// Largest roller tilt the slice pass evaluates (rad): twice the largest the operating state
 /// admits, which a roller sees as tilt_y·cos θ − tilt_x·sin θ.
 const MAX_TILT_RAD: f32 = 2.0 * crate::params::MAX_TILT_RAD;
@@ -114,6 +118,38 @@ impl<const S: usize> SlicedRoller<S> {
         }
     }
 
+    /// [`SlicedRoller::evaluate`] for `Z` rollers of this shape: `out[j]` is the load at
+    /// `approach_m[j]` and `tilt_rad[j]`, bit for bit. The Palmgren pass runs `LANES` rollers
+    /// side by side ([`SlicedRoller::evaluate_palmgren_lanes`]).
+    pub fn evaluate_many<const Z: usize>(
+        &self,
+        approach_m: &[f32; Z],
+        tilt_rad: &[f32; Z],
+        out: &mut [RollerLoad; Z],
+    ) {
+        for ((out, approach), tilt) in out
+            .chunks_mut(LANES)
+            .zip(approach_m.chunks(LANES))
+            .zip(tilt_rad.chunks(LANES))
+        {
+            // A short last chunk runs with idle lanes (zero approach: no slice touches).
+            let mut a = [0.0f32; LANES];
+            let mut t = [0.0f32; LANES];
+            a.iter_mut().zip(approach).for_each(|(a, &v)| *a = v);
+            t.iter_mut().zip(tilt).for_each(|(t, &v)| *t = v);
+            let loads: [RollerLoad; LANES] = match self.law.kind() {
+                ContactLaw::Palmgren => self.evaluate_palmgren_lanes(a, t),
+                ContactLaw::Lundberg => core::array::from_fn(|l| {
+                    self.evaluate_any(
+                        a.get(l).copied().unwrap_or(0.0),
+                        t.get(l).copied().unwrap_or(0.0),
+                    )
+                }),
+            };
+            out.iter_mut().zip(loads).for_each(|(o, l)| *o = l);
+        }
+    }
+
     /// [`SlicedRoller::evaluate`] under the Palmgren law w = c·δ^(10/9), with its derivatives
     /// (10/9)·w/δ and (10/81)·w/δ²: with r = δ^(1/9) the slice sums are taken of w = δ·r,
     /// w/δ = r and w/δ² = r/δ, and the constants (c, the slice length, 10/9, 10/81) applied
@@ -123,27 +159,64 @@ impl<const S: usize> SlicedRoller<S> {
     /// needs only its sign tested.
     #[inline]
     fn evaluate_palmgren(&self, approach_m: f32, tilt_rad: f32) -> RollerLoad {
-        // `min`/`max` take the bound for NaN: hostile input stays finite.
-        let approach_m = min(approach_m, MAX_APPROACH_M);
-        let tilt_rad = min(max(tilt_rad, -MAX_TILT_RAD), MAX_TILT_RAD);
-        let mut sums = [0.0f32; 6];
+        let (approach_m, tilt_rad) = bounded(approach_m, tilt_rad);
+        let mut sums = PalmgrenSums::default();
         for (&x, &c) in self.positions_m.iter().zip(self.crown_offsets_m.iter()) {
-            let slice_approach = approach_m + x * tilt_rad + c;
-            let touching = slice_approach > 0.0;
-            let d = select(touching, slice_approach, 1.0e-12);
-            // The mask multiplies: the root stays in the data flow, the work is fixed.
-            let r = ninth_root_in_range(d) * if touching { 1.0 } else { 0.0 };
-            let w = d * r;
-            let [sw, swx, sk, skx, skxx, sk2] = &mut sums;
-            *sw += w;
-            *swx += w * x;
-            *sk += r;
-            let rx = r * x;
-            *skx += rx;
-            *skxx += rx * x;
-            *sk2 += r / d;
+            let (d, r) = slice_root(approach_m + x * tilt_rad + c);
+            sums.add(d, r, x);
         }
-        let [sw, swx, sk, skx, skxx, sk2] = sums;
+        self.load_from(&sums)
+    }
+
+    /// [`SlicedRoller::evaluate`] under the Palmgren law for `L` rollers of this shape at
+    /// once, with each roller's operations the same and in the same order as alone (so the
+    /// results are the same bit for bit). The roots of all slices come first, then the sums:
+    /// with no dependence between the slices' roots, the host runs the lanes as SIMD lanes and
+    /// overlaps the slices (2.1× the speed of one roller at a time for 17 rollers). The M4
+    /// gains nothing and would pay for the staged roots, so it runs one roller at a time.
+    #[inline(always)]
+    fn evaluate_palmgren_lanes<const L: usize>(
+        &self,
+        approach_m: [f32; L],
+        tilt_rad: [f32; L],
+    ) -> [RollerLoad; L] {
+        let mut bounds = [(0.0f32, 0.0f32); L];
+        for ((b, &a), &t) in bounds
+            .iter_mut()
+            .zip(approach_m.iter())
+            .zip(tilt_rad.iter())
+        {
+            *b = bounded(a, t);
+        }
+        let mut approach = [[0.0f32; L]; S];
+        let mut root = [[0.0f32; L]; S];
+        for (((d, r), &x), &c) in approach
+            .iter_mut()
+            .zip(root.iter_mut())
+            .zip(self.positions_m.iter())
+            .zip(self.crown_offsets_m.iter())
+        {
+            for ((d, r), &(a, t)) in d.iter_mut().zip(r.iter_mut()).zip(bounds.iter()) {
+                (*d, *r) = slice_root(a + x * t + c);
+            }
+        }
+        let mut sums = [PalmgrenSums::default(); L];
+        for ((d, r), &x) in approach
+            .iter()
+            .zip(root.iter())
+            .zip(self.positions_m.iter())
+        {
+            for ((sums, &d), &r) in sums.iter_mut().zip(d.iter()).zip(r.iter()) {
+                sums.add(d, r, x);
+            }
+        }
+        sums.map(|s| self.load_from(&s))
+    }
+
+    /// The roller's load from its Palmgren slice sums.
+    #[inline(always)]
+    fn load_from(&self, sums: &PalmgrenSums) -> RollerLoad {
+        let PalmgrenSums([sw, swx, sk, skx, skxx, sk2]) = *sums;
         let scale = self.law.palmgren_coefficient() * self.slice_length_m;
         let k_scale = (10.0 / 9.0) * scale;
         RollerLoad {
@@ -175,6 +248,47 @@ impl<const S: usize> SlicedRoller<S> {
     }
 }
 
+/// A roller's approach and tilt held to [`MAX_APPROACH_M`] and [`MAX_TILT_RAD`] once, so
+/// that every slice's approach is ≤ 1.1 cm (in the root's range) and a slice needs only its
+/// sign tested. `min`/`max` take the bound for NaN: hostile input stays finite.
+#[inline(always)]
+fn bounded(approach_m: f32, tilt_rad: f32) -> (f32, f32) {
+    (
+        min(approach_m, MAX_APPROACH_M),
+        min(max(tilt_rad, -MAX_TILT_RAD), MAX_TILT_RAD),
+    )
+}
+
+/// A slice's approach δ_k (m), floored where it does not touch, and r = δ_k^(1/9) there
+/// (0 where it does not touch).
+#[inline(always)]
+fn slice_root(slice_approach: f32) -> (f32, f32) {
+    let touching = slice_approach > 0.0;
+    let d = select(touching, slice_approach, 1.0e-12);
+    // The mask multiplies: the root stays in the data flow, the work is fixed.
+    (d, ninth_root_in_range(d) * if touching { 1.0 } else { 0.0 })
+}
+
+/// Σ w, Σ w·x, Σ r, Σ r·x, Σ r·x², Σ r/δ over the slices, with w = δ·r (see
+/// [`SlicedRoller::evaluate`] under the Palmgren law).
+#[derive(Clone, Copy, Default)]
+struct PalmgrenSums([f32; 6]);
+
+impl PalmgrenSums {
+    #[inline(always)]
+    fn add(&mut self, d: f32, r: f32, x: f32) {
+        let [sw, swx, sk, skx, skxx, sk2] = &mut self.0;
+        let w = d * r;
+        *sw += w;
+        *swx += w * x;
+        *sk += r;
+        let rx = r * x;
+        *skx += rx;
+        *skxx += rx * x;
+        *sk2 += r / d;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -185,6 +299,45 @@ mod tests {
     }
 
     const E: f32 = 230.77e9;
+
+    /// The lanes of `evaluate_many` are the one-roller pass bit for bit: crowned and straight
+    /// rollers, both laws, 17 rollers (a short last chunk), approaches from separated to deep,
+    /// tilts of both signs, and NaN.
+    #[test]
+    fn evaluate_many_is_evaluate_bit_for_bit() {
+        for crown in [Crown::None, Crown::Logarithmic { scale: 1.0 }] {
+            for law in [ContactLaw::Palmgren, ContactLaw::Lundberg] {
+                let roller = SlicedRoller::<10>::new(&geometry(crown), E, law);
+                let mut approach = [0.0f32; 17];
+                let mut tilt = [0.0f32; 17];
+                for (j, (a, t)) in approach.iter_mut().zip(tilt.iter_mut()).enumerate() {
+                    *a = 2.0e-6 * (j as f32 - 5.0);
+                    *t = 3.0e-4 * ((j % 5) as f32 - 2.0);
+                }
+                approach[3] = f32::NAN;
+                tilt[16] = f32::NAN;
+                let mut many = [RollerLoad::default(); 17];
+                roller.evaluate_many(&approach, &tilt, &mut many);
+                for ((m, &a), &t) in many.iter().zip(&approach).zip(&tilt) {
+                    let one = roller.evaluate(a, t);
+                    let bits = |l: &RollerLoad| {
+                        [
+                            l.load_n,
+                            l.moment_nm,
+                            l.stiffness_n_per_m,
+                            l.stiffness_moment_n,
+                            l.stiffness_tilt_nm,
+                            l.stiffness_derivative_n_per_m2,
+                        ]
+                        .map(f32::to_bits)
+                    };
+                    assert_eq!(bits(m), bits(&one), "δ = {a}, ψ = {t}");
+                    assert!(m.load_n.is_finite());
+                }
+                assert!(many.iter().any(|m| m.load_n > 0.0));
+            }
+        }
+    }
 
     #[test]
     fn uniform_approach_gives_the_same_load_for_1_10_and_50_slices() {
