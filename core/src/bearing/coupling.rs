@@ -146,6 +146,7 @@ impl PowerLaw {
     /// K'/K = (n − 1)/s give s = 1/(K/Q − K'/K), n = s·K/Q. Straight rollers under the
     /// Palmgren law give n = 10/9 exactly; crowned or tilted ones, whose loaded length grows
     /// with the approach, a larger n. An unloaded roller takes `untouched`.
+    #[inline(always)]
     fn fit(load: &RollerLoad, approach_m: f32, untouched: &Self) -> Self {
         // Both branches are computed and selected (see `math::select`): fixed work.
         let q = load.load_n;
@@ -210,6 +211,7 @@ pub(crate) struct Newton {
 }
 
 impl Newton {
+    #[inline(always)]
     fn new(law: &PowerLaw, geometric_approach_m: f32, start: f32) -> Self {
         let (lo, hi) = (LN_LOAD_MIN, LN_LOAD_MAX);
         let lam = select((start > lo) & (start < hi), start, lo + 0.5);
