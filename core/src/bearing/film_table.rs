@@ -280,6 +280,7 @@ impl StepFilms<'_> {
     /// films of both contacts are then scaled by total_m/last.total_m, so that the central
     /// films add up to the root's sum. (The last Newton step is small, and this spares a
     /// second look-up in the table at the root.)
+    #[inline(always)]
     pub(crate) fn contacts_from(&self, last: &FilmSum, total_m: f32) -> [(f32, f32); 2] {
         // The ratio, and u^κ: `last.central` and the table are in the table's units.
         let scale = select(
