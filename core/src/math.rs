@@ -50,17 +50,20 @@ fn horner<const N: usize>(c: &[f32; N], x: f32) -> f32 {
     c.iter().rev().fold(0.0, |acc, &k| acc * x + k)
 }
 
-/// Round to the nearest integer for |x| < 2²² without a branch.
+/// `x` rounded to the nearest integer n (|x| < 2²²) without a branch, and 2ⁿ for n in
+/// [−126, 127] (the callers clamp their argument so that n is in range; the mask keeps any
+/// other value harmless). Adding 1.5·2²³ leaves n in the sum's low mantissa bits (two's
+/// complement), so 2ⁿ is assembled from those bits with no float-to-integer conversion
+/// (which, saturating, costs a compare chain on x86 and keeps SIMD lanes from forming).
 #[inline(always)]
-fn round_small(x: f32) -> f32 {
-    (x + ROUNDER) - ROUNDER
-}
-
-/// 2ⁿ for an integral `n` in [−126, 127], from its bits. The callers clamp their argument
-/// so that `n` is in range; `as` saturates, and the mask keeps any other value harmless.
-#[inline(always)]
-fn pow2i(n: f32) -> f32 {
-    f32::from_bits((((n as i32) + 127) as u32 & 0xff) << 23)
+fn round_with_pow2(x: f32) -> (f32, f32) {
+    let shifted = x + ROUNDER;
+    let n = shifted - ROUNDER;
+    let biased = shifted
+        .to_bits()
+        .wrapping_sub(ROUNDER.to_bits())
+        .wrapping_add(127);
+    (n, f32::from_bits((biased & 0xff) << 23))
 }
 
 /// Base-2 logarithm for `x > 0` (finite). Inputs `<= 0`, subnormal or NaN are treated as the
@@ -108,8 +111,8 @@ pub fn exp2(y: f32) -> f32 {
 /// [`exp2`] of a `y` known to lie in [−126, 127], without the clamp (see [`exp_in_range`]).
 #[inline(always)]
 pub(crate) fn exp2_in_range(y: f32) -> f32 {
-    let n = round_small(y);
-    horner(&EXP2_POLY, y - n) * pow2i(n)
+    let (n, pow2) = round_with_pow2(y);
+    horner(&EXP2_POLY, y - n) * pow2
 }
 
 /// Exponential. Arguments are clamped to `[-87, 88]` (result between ≈1.6e-38 and ≈1.7e38);
@@ -125,11 +128,11 @@ pub fn exp(x: f32) -> f32 {
 #[inline(always)]
 pub(crate) fn exp_in_range(x: f32) -> f32 {
     // x = n·ln2 + r, |r| ≤ ln2/2; the Cody–Waite split of ln 2 keeps r accurate for large n.
-    let n = round_small(x * core::f32::consts::LOG2_E);
+    let (n, pow2) = round_with_pow2(x * core::f32::consts::LOG2_E);
     const LN_2_HI: f32 = 0.693_145_75;
     const LN_2_LO: f32 = 1.428_606_8e-6;
     let r = (x - n * LN_2_HI) - n * LN_2_LO;
-    horner(&EXP_POLY, r) * pow2i(n)
+    horner(&EXP_POLY, r) * pow2
 }
 
 /// `x^y` for `x > 0`; `x <= 0` (or NaN) gives `0`. Never returns NaN or ∞.
