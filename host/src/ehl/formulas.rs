@@ -16,10 +16,12 @@
 //!   Roelands + Dowson–Higginson numerical solutions:
 //!   h_min/R = 1.714 W^−0.128 U^0.694 G^0.568, h_c/R = 2.922 W^−0.166 U^0.692 G^0.470
 //!   (U on the mean speed, as in Hamrock, *Fundamentals of Fluid Film Lubrication*, 1994,
-//!   ch. 21, which reproduces them). The search tool did not return the paper itself; the
-//!   constants are those of PHYSICS.md §5.1 cross-checked against Hamrock's book as recalled,
-//!   so they remain "as cited", and the solver agreement test is the evidence that they match
-//!   the Roelands + DH model.
+//!   ch. 21, which reproduces them). Two searches of the stored corpora (last on 2026-11-21,
+//!   log in docs/ehl.md) returned the paper only as reference-list entries: not its text, its
+//!   fitted W, U, G range, nor its lubricant (η₀, Roelands Z) constants. The constants are those
+//!   of PHYSICS.md §5.1 cross-checked against Hamrock's book as recalled, so they remain "as
+//!   cited"; the agreement test (12 of 16 corners within 10 % for h_c, 15 of 16 for h_min) is
+//!   the evidence of how far they match the Roelands + DH model.
 //! - Martin (1916), rigid iso-viscous cylinder with the Reynolds exit condition:
 //!   w = 4.896 η₀u_mR/h₀, i.e. h₀/R = 4.896 U/W (PHYSICS.md §5.1).
 //! - Dowson–Toyoda central / Dowson–Higginson minimum (PHYSICS.md §5.1), for comparison tables.

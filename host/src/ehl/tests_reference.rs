@@ -114,38 +114,67 @@ fn moes_formula_agreement() {
     assert_eq!(within, 15);
 }
 
-/// Pan & Hamrock (1989) formulas for Roelands + Dowson–Higginson solutions: h_c and h_min within
-/// 10 % on 12 of the 16 corners of W ∈ {2·10⁻⁵, 5·10⁻⁵, 10⁻⁴, 2·10⁻⁴} × U ∈ {10⁻¹¹, 10⁻¹⁰} ×
-/// G ∈ {2500, 5000} (docs/ehl.md has all 16). Not within 10 % (h_c): G = 5000 with
-/// (W, U) = (10⁻⁴, 10⁻¹⁰) +12.7 %, (2·10⁻⁴, 10⁻¹¹) +10.6 %, (2·10⁻⁴, 10⁻¹⁰) +16.0 %, and
-/// (2·10⁻⁵, 10⁻¹⁰, 2500), M = 1.4, −11.9 %.
+/// Pan & Hamrock (1989) formulas for Roelands + Dowson–Higginson solutions (ASME J. Tribol. 111,
+/// 246–251; constants as in PHYSICS.md §5.1 and formulas.rs), checked at every one of the 16 corners
+/// of W ∈ {2·10⁻⁵, 5·10⁻⁵, 10⁻⁴, 2·10⁻⁴} × U ∈ {10⁻¹¹, 10⁻¹⁰} × G ∈ {2500, 5000}, η₀ = 0.04 Pa·s
+/// (table in docs/ehl.md). The paper's own parameter range and lubricant constants could not be
+/// found (search log in docs/ehl.md), so no corner is dropped as "outside PH's range":
+/// - h_c and h_min within 10 % at 12 corners;
+/// - at the four h_c misses — G = 5000 with (W, U) = (10⁻⁴, 10⁻¹⁰) +12.7 %, (2·10⁻⁴, 10⁻¹¹)
+///   +10.6 %, (2·10⁻⁴, 10⁻¹⁰) +16.0 %, and (2·10⁻⁵, 10⁻¹⁰, 2500), M = 1.4, −11.9 % — h_min is still
+///   within 10 % except at (2·10⁻⁴, 10⁻¹⁰, 5000) (+10.9 %), and the default answer must be converged
+///   in grid and domain: h_c and h_min within 1 % of a solve on 1601 nodes with the inlet twice as
+///   far (X ∈ [−9, 1.5]), i.e. the remaining gap is the formula's, not the discretisation's.
 #[test]
 fn pan_hamrock_agreement() {
-    let mut cases = vec![];
+    let central_misses = [
+        (1e-4, 1e-10, 5000.0),
+        (2e-4, 1e-11, 5000.0),
+        (2e-4, 1e-10, 5000.0),
+        (2e-5, 1e-10, 2500.0),
+    ];
+    let minimum_misses = [(2e-4, 1e-10, 5000.0)];
+    let mut solver = Solver::new(SolverOptions::default()).unwrap();
+    let mut reference = Solver::new(SolverOptions {
+        nodes: 1601,
+        x_start: -9.0,
+        adaptive: false,
+        ..Default::default()
+    })
+    .unwrap();
+    let (mut central_within, mut minimum_within) = (0, 0);
     for w in [2e-5, 5e-5, 1e-4, 2e-4] {
         for u in [1e-11, 1e-10] {
             for g in [2500.0, 5000.0] {
-                let outside = (g == 5000.0 && w >= 1e-4 && (u == 1e-10 || w == 2e-4))
-                    || (w == 2e-5 && u == 1e-10 && g == 2500.0);
-                if !outside {
-                    cases.push((w, u, g));
+                let case = ContactCase::from_dimensionless(w, u, g).unwrap();
+                let s = solver.solve(&case).unwrap();
+                let rc = s.central_film_m / formulas::pan_hamrock_central_film_m(&case);
+                let rm = s.min_film_m / formulas::pan_hamrock_min_film_m(&case);
+                println!("W={w:e} U={u:e} G={g}: h_c/PH = {rc:.4}, h_min/PH = {rm:.4}");
+                if !minimum_misses.contains(&(w, u, g)) {
+                    assert!(
+                        (rm - 1.0).abs() < 0.10,
+                        "W={w} U={u} G={g}: h_min/PH = {rm}"
+                    );
+                    minimum_within += 1;
                 }
+                if !central_misses.contains(&(w, u, g)) {
+                    assert!((rc - 1.0).abs() < 0.10, "W={w} U={u} G={g}: h_c/PH = {rc}");
+                    central_within += 1;
+                    continue;
+                }
+                let fine = reference.solve(&case).unwrap();
+                let dc = s.central_film_m / fine.central_film_m - 1.0;
+                let dm = s.min_film_m / fine.min_film_m - 1.0;
+                println!("   converged check (1601 nodes, X from -9): h_c {dc:.4}, h_min {dm:.4}");
+                assert!(
+                    dc.abs() < 0.01 && dm.abs() < 0.01,
+                    "W={w} U={u} G={g}: not converged (h_c {dc}, h_min {dm})"
+                );
             }
         }
     }
-    assert_eq!(cases.len(), 12);
-    let mut solver = Solver::new(SolverOptions::default()).unwrap();
-    for (w, u, g) in cases {
-        let case = ContactCase::from_dimensionless(w, u, g).unwrap();
-        let s = solver.solve(&case).unwrap();
-        let rc = s.central_film_m / formulas::pan_hamrock_central_film_m(&case);
-        let rm = s.min_film_m / formulas::pan_hamrock_min_film_m(&case);
-        assert!((rc - 1.0).abs() < 0.10, "W={w} U={u} G={g}: h_c/PH = {rc}");
-        assert!(
-            (rm - 1.0).abs() < 0.10,
-            "W={w} U={u} G={g}: h_min/PH = {rm}"
-        );
-    }
+    assert_eq!((central_within, minimum_within), (12, 15));
 }
 
 /// Fast robustness check over Latin-hypercube samples of the PHYSICS.md §5.3 domain
