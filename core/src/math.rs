@@ -51,12 +51,16 @@ fn horner<const N: usize>(c: &[f32; N], x: f32) -> f32 {
 }
 
 /// `x` rounded to the nearest integer n (|x| < 2²²) without a branch, and 2ⁿ for n in
-/// [−126, 127] (the callers clamp their argument so that n is in range; the mask keeps any
-/// other value harmless). Adding 1.5·2²³ leaves n in the sum's low mantissa bits (two's
-/// complement), so 2ⁿ is assembled from those bits with no float-to-integer conversion
-/// (which, saturating, costs a compare chain on x86 and keeps SIMD lanes from forming).
+/// [−126, 127] (the callers clamp their argument so that n is in range; the mask keeps the
+/// sign bit clear for any other value). The sum `t = x + 1.5·2²³` lies in [2²³, 2²⁴), where
+/// consecutive f32 are 1 apart, so it is rounded to an integer and its bit pattern is
+/// `bits(1.5·2²³) + n` (IEEE 754 binary32: the mantissa field counts units of 1 there); then
+/// n = t − 1.5·2²³ exactly, and `(bits(t) − bits(1.5·2²³) + 127) << 23` is the pattern of 2ⁿ
+/// (biased exponent n + 127, zero mantissa). No float-to-integer conversion: Rust's `as i32`
+/// saturates, which costs a compare chain around `cvttss2si` on x86 and keeps SIMD lanes
+/// from forming. Shared by the core's `exp`/`exp2` and the network's (`film::ann::fastmath`).
 #[inline(always)]
-fn round_with_pow2(x: f32) -> (f32, f32) {
+pub(crate) fn round_with_pow2(x: f32) -> (f32, f32) {
     let shifted = x + ROUNDER;
     let n = shifted - ROUNDER;
     let biased = shifted
@@ -326,6 +330,24 @@ pub fn finite_or(value: f32, fallback: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Reference: `libm::ldexpf(1, k)` (exact powers of two) and round-half-even of k + ¼, k ± ½
+    /// (the nearest integer the 1.5·2²³ addition must give), for every k the callers reach.
+    #[test]
+    fn round_with_pow2_is_exact() {
+        for k in -126i32..=126 {
+            let kf = k as f32;
+            assert_eq!(round_with_pow2(kf), (kf, libm::ldexpf(1.0, k)), "k = {k}");
+            let (up, _) = round_with_pow2(kf + 0.25);
+            assert_eq!(up, kf, "k + ¼, k = {k}");
+            // Ties go to the even neighbour (IEEE 754 round-to-nearest-even).
+            let (tie, _) = round_with_pow2(kf + 0.5);
+            let even = if k % 2 == 0 { kf } else { kf + 1.0 };
+            assert_eq!(tie, even, "k + ½, k = {k}");
+        }
+        let (k, scale) = round_with_pow2(127.0);
+        assert_eq!((k, scale), (127.0, libm::ldexpf(1.0, 127)));
+    }
 
     fn rel(a: f32, b: f64) -> f64 {
         ((a as f64 - b) / b).abs()

@@ -10,7 +10,8 @@
 //!   rounding constant) and f ∈ [−½, ½]; `2^f = e^{f ln 2}` by its Taylor polynomial of degree 7
 //!   (truncation < 1e-8), `2^k` assembled in the exponent bits.
 //! - `2^k` is built from the bits of the rounding sum `y + 1.5·2²³` itself, whose mantissa holds
-//!   k as an integer ([`round_and_pow2`]), not by a float→int conversion: Rust's `as i32`
+//!   k as an integer (`crate::math::round_with_pow2`, shared with the core's own `exp`), not by
+//!   a float→int conversion: Rust's `as i32`
 //!   saturates, which on x86-64 costs a compare-and-select around `cvttss2si` and keeps LLVM from
 //!   vectorising a layer's activations; integer adds and a shift vectorise with SSE2 and are
 //!   single instructions on the M4. The result is bit-identical to the conversion's.
@@ -18,10 +19,7 @@
 //!   `logistic x = 1/(1 + e^{−x})` on x clamped to ±30. Both inline into the caller's loop so a
 //!   layer's neurons are evaluated lane-wise ([`super::float::DenseF32::forward`]).
 
-/// 1.5·2²³: adding and subtracting it rounds an f32 of magnitude < 2²² to the nearest integer.
-const ROUNDING: f32 = 12_582_912.0;
-/// Bit pattern of [`ROUNDING`] (sign 0, biased exponent 150, mantissa 2²²).
-const ROUNDING_BITS: u32 = 0x4b40_0000;
+use crate::math::round_with_pow2;
 
 /// Branch-free clamp (`f32::clamp` panics on bad bounds and `max`/`min` may become libcalls
 /// without an FPU `vmaxnm`).
@@ -60,25 +58,11 @@ fn exp_reduced(t: f32) -> f32 {
                         + t * (1.0 / 120.0 + t * (1.0 / 720.0 + t * (1.0 / 5040.0)))))))
 }
 
-/// `(k, 2^k)` for the nearest integer k to `y`, |y| ≤ 126. The sum `t = y + 1.5·2²³` lies in
-/// [2²³, 2²⁴), where consecutive f32 are 1 apart, so it is rounded to an integer and its bit
-/// pattern is `ROUNDING_BITS + k` (IEEE 754 binary32 layout: the mantissa field counts units of
-/// 1 there). Then `k = t − 1.5·2²³` exactly, and `(bits(t) − ROUNDING_BITS + 127) << 23` is the
-/// pattern of 2^k (biased exponent k + 127, zero mantissa) for k in [−126, 127]; the integer
-/// arithmetic wraps, which is exact for negative k.
-#[inline(always)]
-fn round_and_pow2(y: f32) -> (f32, f32) {
-    let t = y + ROUNDING;
-    let k = t - ROUNDING;
-    let biased = t.to_bits().wrapping_sub(ROUNDING_BITS).wrapping_add(127);
-    (k, f32::from_bits(biased << 23))
-}
-
 /// 2^x (see the module doc); NaN in, NaN out.
 #[inline]
 pub fn exp2(x: f32) -> f32 {
     let x = clamp(x, -126.0, 126.0);
-    let (k, scale) = round_and_pow2(x);
+    let (k, scale) = round_with_pow2(x);
     exp_reduced((x - k) * core::f32::consts::LN_2) * scale
 }
 
@@ -91,7 +75,7 @@ const LN2_LO: f32 = 1.428_606_8e-6;
 /// callers clamp).
 #[inline(always)]
 fn exp_in_range(x: f32) -> f32 {
-    let (k, scale) = round_and_pow2(x * core::f32::consts::LOG2_E);
+    let (k, scale) = round_with_pow2(x * core::f32::consts::LOG2_E);
     let r = (x - k * LN2_HI) - k * LN2_LO;
     exp_reduced(r) * scale
 }
@@ -165,24 +149,6 @@ mod tests {
             );
             x += 0.0371;
         }
-    }
-
-    /// Reference: `libm::ldexpf(1, k)` (exact powers of two) and round-half-even of k + ¼, k ± ½
-    /// (the nearest integer the 1.5·2²³ addition must give), for every k the callers reach.
-    #[test]
-    fn round_and_pow2_is_exact() {
-        for k in -126i32..=126 {
-            let kf = k as f32;
-            assert_eq!(round_and_pow2(kf), (kf, libm::ldexpf(1.0, k)), "k = {k}");
-            let (up, _) = round_and_pow2(kf + 0.25);
-            assert_eq!(up, kf, "k + ¼, k = {k}");
-            // Ties go to the even neighbour (IEEE 754 round-to-nearest-even).
-            let (tie, _) = round_and_pow2(kf + 0.5);
-            let even = if k % 2 == 0 { kf } else { kf + 1.0 };
-            assert_eq!(tie, even, "k + ½, k = {k}");
-        }
-        let (k, scale) = round_and_pow2(127.0);
-        assert_eq!((k, scale), (127.0, libm::ldexpf(1.0, 127)));
     }
 
     /// Reference: libm tanhf, densely over the range the network's pre-activations reach
