@@ -29,7 +29,7 @@ use crate::film::{ContactInput, Regime, RegimeAxis};
 use crate::math::{exp2_in_range, exp_in_range, ln_normal, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step. Two suffice
-/// with the step of [`Newton::iterate`]: the warm start's accuracy test passes, and the shaft
+/// with the step of `Newton::iterate`: the warm start's accuracy test passes, and the shaft
 /// integrator's Newton converges on the forces (`bearing shaft sweep --film int`); the step on
 /// ln(D/H) it replaced needed three.
 pub const NEWTON_ITERATIONS: usize = 2;

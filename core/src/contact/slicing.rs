@@ -120,7 +120,7 @@ impl<const S: usize> SlicedRoller<S> {
 
     /// [`SlicedRoller::evaluate`] for `Z` rollers of this shape: `out[j]` is the load at
     /// `approach_m[j]` and `tilt_rad[j]`, bit for bit. The Palmgren pass runs `LANES` rollers
-    /// side by side ([`SlicedRoller::evaluate_palmgren_lanes`]).
+    /// side by side (`evaluate_palmgren_lanes`).
     pub fn evaluate_many<const Z: usize>(
         &self,
         approach_m: &[f32; Z],

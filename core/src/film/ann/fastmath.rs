@@ -80,7 +80,7 @@ fn exp_in_range(x: f32) -> f32 {
     exp_reduced(r) * scale
 }
 
-/// e^x (see [`exp_in_range`]); x clamped to ±87.
+/// e^x (see `exp_in_range`); x clamped to ±87.
 #[inline]
 pub fn exp(x: f32) -> f32 {
     exp_in_range(clamp(x, -87.0, 87.0))
