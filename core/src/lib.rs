@@ -28,6 +28,7 @@ pub mod contact;
 mod error;
 pub mod film;
 pub mod kinematics;
+mod lanes;
 pub mod math;
 pub mod params;
 

@@ -6,9 +6,11 @@
 //! their results are bit-identical on the host and on the Cortex-M4F (no fused operations).
 //! Accuracy (checked in the tests against f64): a few ulp over the whole positive range.
 
+use crate::lanes::Real;
+
 const SQRT_2: f32 = core::f32::consts::SQRT_2;
 /// 1.5·2²³: adding and subtracting it rounds an f32 of magnitude < 2²² to the nearest integer.
-const ROUNDER: f32 = 12_582_912.0;
+pub(crate) const ROUNDER: f32 = 12_582_912.0;
 
 // Polynomial coefficients: least-squares fits on Chebyshev nodes (near-minimax), rounded to
 // f32 and checked in f32 arithmetic (tests below).
@@ -46,8 +48,10 @@ const EXP2_POLY: [f32; 6] = [
 
 /// Horner evaluation of `c[0] + c[1]x + …`; a fixed chain of multiply–adds.
 #[inline(always)]
-fn horner<const N: usize>(c: &[f32; N], x: f32) -> f32 {
-    c.iter().rev().fold(0.0, |acc, &k| acc * x + k)
+fn horner<T: Real, const N: usize>(c: &[f32; N], x: T) -> T {
+    c.iter()
+        .rev()
+        .fold(T::splat(0.0), |acc, &k| acc * x + T::splat(k))
 }
 
 /// `x` rounded to the nearest integer n (|x| < 2²²) without a branch, and 2ⁿ for n in
@@ -114,8 +118,8 @@ pub fn exp2(y: f32) -> f32 {
 
 /// [`exp2`] of a `y` known to lie in [−126, 127], without the clamp (see [`exp_in_range`]).
 #[inline(always)]
-pub(crate) fn exp2_in_range(y: f32) -> f32 {
-    let (n, pow2) = round_with_pow2(y);
+pub(crate) fn exp2_in_range<T: Real>(y: T) -> T {
+    let (n, pow2) = y.round_with_pow2();
     horner(&EXP2_POLY, y - n) * pow2
 }
 
@@ -130,12 +134,12 @@ pub fn exp(x: f32) -> f32 {
 /// calls it a few times per roller with ln Q bracketed, and the clamp's two compares are a
 /// sixth of its cost. Arguments outside give finite nonsense, or ∞ beyond |x| ≈ 10⁴.
 #[inline(always)]
-pub(crate) fn exp_in_range(x: f32) -> f32 {
+pub(crate) fn exp_in_range<T: Real>(x: T) -> T {
     // x = n·ln2 + r, |r| ≤ ln2/2; the Cody–Waite split of ln 2 keeps r accurate for large n.
-    let (n, pow2) = round_with_pow2(x * core::f32::consts::LOG2_E);
+    let (n, pow2) = (x * T::splat(core::f32::consts::LOG2_E)).round_with_pow2();
     const LN_2_HI: f32 = 0.693_145_75;
     const LN_2_LO: f32 = 1.428_606_8e-6;
-    let r = (x - n * LN_2_HI) - n * LN_2_LO;
+    let r = (x - n * T::splat(LN_2_HI)) - n * T::splat(LN_2_LO);
     horner(&EXP_POLY, r) * pow2
 }
 

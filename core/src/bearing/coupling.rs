@@ -23,9 +23,10 @@
 //! |Δh|/h ≤ 10⁻³ (tested against a converged f64 iteration over the PHYSICS.md §5.3 domain);
 //! larger jumps cost accuracy at the lightest loads for one step (see the test).
 
-use super::film_table::{FilmSum, StepFilms};
+use super::film_table::{FilmSum, FilmSums, StepFilms};
 use crate::contact::{RollerLoad, SlicedRoller};
 use crate::film::{ContactInput, Regime, RegimeAxis};
+use crate::lanes::Real;
 use crate::math::{exp2_in_range, exp_in_range, ln_normal, max, min, select};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step. Two suffice
@@ -192,40 +193,113 @@ struct Solved {
 /// sum at the returned λ is the last evaluation continued by its tangent (second-order
 /// accurate, and free).
 ///
-/// One roller's iteration state, so that a step runs the iterations of all its rollers in
-/// lockstep (`Bearing::step`): their chains of dependent operations are independent, and a
-/// superscalar host overlaps them (on the in-order M4 the work is the same).
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Newton {
-    gap: f32,
-    inverse_exponent: f32,
+/// The iteration state of the rollers in the lanes of `T`: `Newton<f32>` is one roller's
+/// (the Cortex-M4 iterates one roller at a time: lanes gain nothing in order). A host gathers
+/// the rollers' states four at a time into `Newton<F32x4>` ([`Newton::from_lanes`]) and
+/// iterates them as SIMD lanes. Each lane runs the operations of one roller in the same order
+/// (`crate::lanes`), so the results are the same bit for bit. (An iteration is a chain of
+/// dependent operations — two exponentials, two roots, three divisions — whose latency a
+/// superscalar core cannot hide by overlapping the rollers one after another.)
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Newton<T: Real = f32> {
+    gap: T,
+    inverse_exponent: T,
     /// log₂e/n: the law's exponential taken as a power of two.
-    inverse_exponent_log2: f32,
-    span_m: f32,
-    ln_load_ref: f32,
-    lo: f32,
-    hi: f32,
-    lam: f32,
+    inverse_exponent_log2: T,
+    span_m: T,
+    ln_load_ref: T,
+    lo: T,
+    hi: T,
+    lam: T,
     /// λ, the film sum and dE/dλ at the last evaluation.
-    last: (f32, FilmSum, f32),
+    last: (T, FilmSums<T>, T),
+}
+
+impl Default for Newton {
+    fn default() -> Self {
+        Self::from_one(0.0, 1.0, 0.0, 0.0, 0.0)
+    }
 }
 
 impl Newton {
     #[inline(always)]
     fn new(law: &PowerLaw, geometric_approach_m: f32, start: f32) -> Self {
         let (lo, hi) = (LN_LOAD_MIN, LN_LOAD_MAX);
-        let lam = select((start > lo) & (start < hi), start, lo + 0.5);
+        Self::from_one(
+            geometric_approach_m - law.offset_m,
+            law.exponent,
+            law.span_m,
+            law.ln_load_ref,
+            select((start > lo) & (start < hi), start, lo + 0.5),
+        )
+    }
+
+    /// A roller's state before its first step: the gap δ_geo − δ_off (m), the law's exponent
+    /// n, span (m) and λ_ref, and the start λ.
+    #[inline(always)]
+    fn from_one(gap: f32, exponent: f32, span_m: f32, ln_load_ref: f32, lam: f32) -> Self {
         Self {
-            gap: geometric_approach_m - law.offset_m,
-            inverse_exponent: 1.0 / law.exponent,
-            inverse_exponent_log2: core::f32::consts::LOG2_E / law.exponent,
-            span_m: law.span_m,
-            ln_load_ref: law.ln_load_ref,
-            lo,
-            hi,
+            gap,
+            inverse_exponent: 1.0 / exponent,
+            inverse_exponent_log2: core::f32::consts::LOG2_E / exponent,
+            span_m,
+            ln_load_ref,
+            lo: LN_LOAD_MIN,
+            hi: LN_LOAD_MAX,
             lam,
             last: (lam, FilmSum::default(), 0.0),
         }
+    }
+
+    /// The root found so far.
+    fn solved(&self) -> Solved {
+        let (at, last, elastic_slope_m) = self.last;
+        Solved {
+            ln_load: self.lam,
+            film_m: max(last.total_m + last.slope_m * (self.lam - at), 0.0),
+            last,
+            elastic_slope_m,
+        }
+    }
+}
+
+impl<T: Real> Newton<T> {
+    /// The states of single rollers fresh from `Newton::new`, side by side: their last
+    /// evaluation is the start λ with an empty film sum, as `new` leaves it (so it is made
+    /// here, not gathered).
+    #[inline(always)]
+    pub(crate) fn start_lanes(rollers: &T::PerLane<Newton>) -> Self {
+        let field = |f: fn(&Newton) -> f32| T::from_per_lane(rollers, f);
+        let lam = field(|n| n.lam);
+        Self {
+            gap: field(|n| n.gap),
+            inverse_exponent: field(|n| n.inverse_exponent),
+            inverse_exponent_log2: field(|n| n.inverse_exponent_log2),
+            span_m: field(|n| n.span_m),
+            ln_load_ref: field(|n| n.ln_load_ref),
+            lo: field(|n| n.lo),
+            hi: field(|n| n.hi),
+            lam,
+            last: (
+                lam,
+                FilmSums::from_lanes(&T::map_items(rollers, |_| FilmSum::default())),
+                T::splat(0.0),
+            ),
+        }
+    }
+
+    /// Store what the iterations of lane `i` changed (bracket, λ, last evaluation) into the
+    /// state of its roller; the law's constants there are the lane's already.
+    #[inline(always)]
+    pub(crate) fn store_lane(&self, i: usize, roller: &mut Newton) {
+        roller.lo = self.lo.lane(i);
+        roller.hi = self.hi.lane(i);
+        roller.lam = self.lam.lane(i);
+        roller.last = (
+            self.last.0.lane(i),
+            self.last.1.lane(i),
+            self.last.2.lane(i),
+        );
     }
 
     /// One safeguarded Newton step on 2·sinh(Φ/2) = √(D/H) − √(H/D), a residual with the root
@@ -242,37 +316,28 @@ impl Newton {
         let elastic =
             self.span_m * exp2_in_range(self.inverse_exponent_log2 * (lam - self.ln_load_ref));
         let f = films.sum_at(lam);
-        let (h, dh) = (max(f.total_m, 1.0e-30), f.slope_m);
+        let (h, dh) = (f.total_m.max(T::splat(1.0e-30)), f.slope_m);
         let elastic_slope = self.inverse_exponent * elastic;
         self.last = (lam, f, elastic_slope);
         let missing = elastic - self.gap;
-        let defined = missing > 0.0;
+        let defined = missing.gt(T::splat(0.0));
         // The floor by a bit-mask select, not `max`: with `max` LLVM emitted a branch to a copy
         // of the loop body specialised for a floored `missing` (a roller whose approach stays
         // short of the law's offset), and such steps cost more on the M4.
-        let d = select(missing > 1.0e-30, missing, 1.0e-30);
+        let tiny = T::splat(1.0e-30);
+        let d = T::select(missing.gt(tiny), missing, tiny);
         // 2(H − D)/((D + H)·(D'/D − H'/H)), multiplied through by D·H (> 0; D' > 0, H' ≤ 0).
-        let newton = lam + 2.0 * (h - d) * d * h / ((d + h) * (elastic_slope * h - dh * d));
-        let above = missing > h;
+        let newton =
+            lam + T::splat(2.0) * (h - d) * d * h / ((d + h) * (elastic_slope * h - dh * d));
+        let above = missing.gt(h);
         // Plain values on both sides: a conditional move, no branch.
-        self.hi = if above { lam } else { self.hi };
-        self.lo = if above { self.lo } else { lam };
-        self.lam = select(
-            defined & (newton >= self.lo) & (newton <= self.hi),
+        self.hi = T::choose(above, lam, self.hi);
+        self.lo = T::choose(above, self.lo, lam);
+        self.lam = T::select(
+            defined & newton.ge(self.lo) & newton.le(self.hi),
             newton,
-            0.5 * (self.lo + self.hi),
+            T::splat(0.5) * (self.lo + self.hi),
         );
-    }
-
-    /// The root found so far.
-    fn solved(&self) -> Solved {
-        let (at, last, elastic_slope_m) = self.last;
-        Solved {
-            ln_load: self.lam,
-            film_m: max(last.total_m + last.slope_m * (self.lam - at), 0.0),
-            last,
-            elastic_slope_m,
-        }
     }
 }
 
@@ -395,5 +460,72 @@ pub(crate) fn finish_roller(
         films: per_contact,
         film_slope_m_per_n: film_slope_m / load_n,
         regimes: regime_axes.map(|axis| axis.at(ln_load)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::film_table::FilmTable;
+    use super::*;
+    use crate::film::{Regression, MARTIN_CENTRAL};
+    use crate::lanes::F32x4;
+
+    /// The host's lanes iterate each roller exactly as the M4 iterates it alone: four rollers
+    /// side by side against four one-roller solves, bit for bit in λ, the bracket and the last
+    /// evaluation, over loaded, light and separated rollers (gaps from −5 µm to 40 µm, laws
+    /// with n from 1 to 4), three iterations each.
+    #[test]
+    fn lanes_iterate_each_roller_bit_for_bit() {
+        let contact = |r: f32| ContactInput {
+            load_n: 0.0,
+            length_m: 0.015,
+            entrainment_speed_m_s: 9.0,
+            reduced_radius_m: r,
+            reduced_modulus_pa: 2.3e11,
+            pressure_viscosity_pa_inv: 2.1e-8,
+            viscosity_pa_s: 0.08,
+        };
+        let contacts = [contact(3.7e-3), contact(5.1e-3)];
+        let martin = contacts.map(|c| {
+            MARTIN_CENTRAL
+                * c.viscosity_pa_s
+                * c.entrainment_speed_m_s
+                * c.reduced_radius_m
+                * c.length_m
+        });
+        let mut table = FilmTable::default();
+        let films = table.step(&Regression, contacts, martin, (2.0, 9.0), true);
+        let bits = |n: &Newton| {
+            let (at, last, slope) = n.last;
+            [n.lam, n.lo, n.hi, at, slope, last.total_m, last.slope_m].map(f32::to_bits)
+        };
+        let mut rollers = [Newton::default(); 16];
+        for (k, roller) in rollers.iter_mut().enumerate() {
+            let k = k as f32;
+            let law = PowerLaw {
+                offset_m: 1.0e-6 * (k - 6.0),
+                ln_load_ref: 2.0 + 0.5 * k,
+                span_m: 2.0e-6 * (1.0 + 0.3 * k),
+                exponent: 1.0 + 0.2 * k,
+            };
+            *roller = Newton::new(&law, 3.0e-6 * (k - 4.0), 1.0 + 0.7 * k);
+        }
+        for group in rollers.chunks_exact(4) {
+            let group: [Newton; 4] = core::array::from_fn(|i| group[i]);
+            let mut lanes = Newton::<F32x4>::start_lanes(&group);
+            let mut alone = group;
+            for _ in 0..3 {
+                lanes.iterate(&films);
+                for n in alone.iter_mut() {
+                    n.iterate(&films);
+                }
+            }
+            for (i, one) in alone.iter().enumerate() {
+                let mut from_lanes = group[i];
+                lanes.store_lane(i, &mut from_lanes);
+                assert_eq!(bits(&from_lanes), bits(one), "roller {i}");
+                assert!(one.lam.is_finite());
+            }
+        }
     }
 }

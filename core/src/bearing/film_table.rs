@@ -29,6 +29,7 @@
 //! most (p·Δλ)²/8: 2·10⁻⁵ for EHL films (p ≈ −0.1), 0.2 % even for |p| = 1.
 
 use crate::film::{ContactInput, FilmModel, MARTIN_CENTRAL, MARTIN_MINIMUM};
+use crate::lanes::Real;
 use crate::math::{exp, exp_in_range, ln, max, min, select, sqrt, sqrt_non_negative};
 
 /// Nodes of the film table per contact kind.
@@ -93,19 +94,64 @@ pub(crate) struct StepFilms<'a> {
     martin_per_scale: [f32; 2],
 }
 
-/// Film sum of one roller at λ = ln Q, with what the roller's outputs take from it.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct FilmSum {
+/// Film sums of the rollers in the lanes of `T` (one roller: [`FilmSum`]) at their λ = ln Q,
+/// with what the rollers' outputs take from them.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FilmSums<T: Real> {
     /// H = Σ √(e² + h_RI²), the film both contacts add to the approach (m).
-    pub total_m: f32,
+    pub total_m: T,
     /// dH/dλ (m).
-    pub slope_m: f32,
+    pub slope_m: T,
     /// 1/Q = e^(−λ) (1/N).
-    inv_load: f32,
+    inv_load: T,
     /// The terms of the sum, each contact's central film, divided by u^κ.
-    central: [f32; 2],
+    central: [T; 2],
     /// Where λ fell in the table.
-    cell: Cell,
+    cell: T::PerLane<Cell>,
+}
+
+/// Film sum of one roller.
+pub(crate) type FilmSum = FilmSums<f32>;
+
+impl Default for FilmSum {
+    fn default() -> Self {
+        Self {
+            total_m: 0.0,
+            slope_m: 0.0,
+            inv_load: 0.0,
+            central: [0.0; 2],
+            cell: Cell::default(),
+        }
+    }
+}
+
+impl<T: Real> FilmSums<T> {
+    /// The sums of single rollers side by side.
+    #[inline(always)]
+    pub(crate) fn from_lanes(sums: &T::PerLane<FilmSum>) -> Self {
+        Self {
+            total_m: T::from_per_lane(sums, |s| s.total_m),
+            slope_m: T::from_per_lane(sums, |s| s.slope_m),
+            inv_load: T::from_per_lane(sums, |s| s.inv_load),
+            central: [
+                T::from_per_lane(sums, |s| s.central[0]),
+                T::from_per_lane(sums, |s| s.central[1]),
+            ],
+            cell: T::map_items(sums, |s| s.cell),
+        }
+    }
+
+    /// The sum of lane `i` (a zero sum beyond the lanes).
+    #[inline(always)]
+    pub(crate) fn lane(&self, i: usize) -> FilmSum {
+        FilmSum {
+            total_m: self.total_m.lane(i),
+            slope_m: self.slope_m.lane(i),
+            inv_load: self.inv_load.lane(i),
+            central: self.central.map(|c| c.lane(i)),
+            cell: T::item(&self.cell, i),
+        }
+    }
 }
 
 /// Where λ falls in the table: the cell's first node and the fraction across it, held to the
@@ -240,15 +286,20 @@ impl FilmTable {
 }
 
 impl StepFilms<'_> {
-    /// H and dH/dλ at λ = ln Q: each contact's √(e² + h_RI²), summed.
-    #[inline]
-    pub(crate) fn sum_at(&self, ln_load: f32) -> FilmSum {
+    /// H and dH/dλ at λ = ln Q, of each roller in the lanes of `T`: each contact's
+    /// √(e² + h_RI²), summed. The lanes run the same operations in the same order as one
+    /// roller (the same bits); only the table look-ups go lane by lane. Inlined into the
+    /// host's lanes (a call would pass the lanes through memory); a call on the M4, whose
+    /// registers the inlined sum would overflow into the stack (+400 instructions per step).
+    #[cfg_attr(target_arch = "arm", inline)]
+    #[cfg_attr(not(target_arch = "arm"), inline(always))]
+    pub(crate) fn sum_at<T: Real>(&self, ln_load: T) -> FilmSums<T> {
         // λ is bracketed by the scalar solve: in range.
         let inv_load = exp_in_range(-ln_load);
-        let cell = Cell::at(ln_load);
-        let mut total_m = 0.0;
-        let mut slope_m = 0.0;
-        let mut central = [0.0; 2];
+        let cell = ln_load.map_lanes(Cell::at);
+        let mut total_m = T::splat(0.0);
+        let mut slope_m = T::splat(0.0);
+        let mut central = [T::splat(0.0); 2];
         // In the table's units (films divided by u^κ), scaled once at the end.
         for ((nodes, &b), h_out) in self
             .table
@@ -257,17 +308,19 @@ impl StepFilms<'_> {
             .zip(self.martin_per_scale.iter())
             .zip(central.iter_mut())
         {
-            let (e, de) = cell.interpolate(nodes);
-            let hydro = b * inv_load;
+            let e = T::from_per_lane(&cell, |c| c.interpolate(nodes).0);
+            let de = T::from_per_lane(&cell, |c| c.interpolate(nodes).1);
+            let hydro = T::splat(b) * inv_load;
             // e and h_RI are finite (table values, and B/Q with λ bracketed): no clamp needed.
-            let h = sqrt_non_negative(e * e + hydro * hydro);
+            let h = (e * e + hydro * hydro).sqrt_non_negative();
             *h_out = h;
-            total_m += h;
-            slope_m += (e * de - hydro * hydro) / max(h, 1.0e-30);
+            total_m = total_m + h;
+            slope_m = slope_m + (e * de - hydro * hydro) / h.max(T::splat(1.0e-30));
         }
-        FilmSum {
-            total_m: total_m * self.speed_scale,
-            slope_m: slope_m * self.speed_scale,
+        let speed_scale = T::splat(self.speed_scale);
+        FilmSums {
+            total_m: total_m * speed_scale,
+            slope_m: slope_m * speed_scale,
             inv_load,
             central,
             cell,

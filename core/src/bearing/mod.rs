@@ -20,12 +20,13 @@ pub use output::{BearingOutput, RollerOutput, StepStatus};
 use crate::contact::{ContactLaw, SlicedRoller};
 use crate::error::{in_range, Allowed, ParamError};
 use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis, ServedLoads};
+use crate::lanes::F32x4;
 use crate::math::{ln, select, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use core::f32::consts::PI;
 use coupling::{
-    finish_roller, predicted_approach, prepare_roller, prepare_sliced, ContactContext, Prepared,
-    RollerMemory,
+    finish_roller, predicted_approach, prepare_roller, prepare_sliced, ContactContext, Newton,
+    Prepared, RollerMemory,
 };
 use film_table::FilmTable;
 use output::StiffnessSums;
@@ -331,12 +332,14 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         };
         let places = parts.places(state);
         // Each roller: its slice pass and power law (`prepare_roller`), NEWTON_ITERATIONS
-        // Newton steps, its outputs (`finish_roller`). On a superscalar host the Newton steps
-        // of all rollers run in lockstep: their chains of dependent operations are independent
-        // and the core overlaps them (−20 % step time). The in-order M4 gains nothing from
-        // that and would pay ≈ 4 k instructions of loads and stores for the staged state, so
-        // it runs the rollers one after another. The operations of each roller are the same
-        // either way, so are the results, bit for bit (`hil-sim qemu` compares them).
+        // Newton steps, its outputs (`finish_roller`). A superscalar host runs the slice passes
+        // and the Newton steps of four rollers at a time in SIMD lanes (`crate::lanes`): each
+        // Newton step is a chain of dependent operations whose latency the core cannot hide
+        // one roller after another. The in-order M4 gains nothing from lanes and would pay
+        // ≈ 4 k instructions of loads and stores for the staged state, so it runs the rollers
+        // one after another. The operations of each roller are the same either way, so are
+        // the results, bit for bit (tests in `lanes`, `coupling` and `slicing`; `hil-sim qemu`
+        // compares whole traces).
         let mut prepared = [Prepared::default(); Z];
         if LOCKSTEP {
             // The slice passes of all rollers together, in SIMD lanes.
@@ -362,9 +365,20 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             {
                 *p = prepare_sliced(r1, a, place.geometric_m, memory);
             }
-            for _ in 0..NEWTON_ITERATIONS {
-                for p in prepared.iter_mut() {
-                    p.newton.iterate(&films);
+            // The Newton steps of four rollers at a time in SIMD lanes (a short last group
+            // runs with idle lanes: default states, discarded).
+            for group in prepared.chunks_mut(4) {
+                let mut states = [Newton::default(); 4];
+                states
+                    .iter_mut()
+                    .zip(group.iter())
+                    .for_each(|(s, p)| *s = p.newton);
+                let mut lanes = Newton::<F32x4>::start_lanes(&states);
+                for _ in 0..NEWTON_ITERATIONS {
+                    lanes.iterate(&films);
+                }
+                for (i, p) in group.iter_mut().enumerate() {
+                    lanes.store_lane(i, &mut p.newton);
                 }
             }
         }
@@ -485,8 +499,9 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     }
 }
 
-/// Whether the lubricated step runs the Newton steps of all rollers in lockstep (hosts) or
-/// each roller's in turn (bare-metal ARM: the in-order Cortex-M).
+/// Whether the lubricated step runs the slice passes and Newton steps of the rollers in SIMD
+/// lanes, four at a time (hosts), or each roller in turn (bare-metal ARM: the in-order
+/// Cortex-M).
 const LOCKSTEP: bool = !cfg!(all(target_arch = "arm", target_os = "none"));
 
 /// A roller's direction (cos, sin of θ_j), geometric approach (m) and tilt (rad) at a step.

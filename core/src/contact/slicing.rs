@@ -6,6 +6,7 @@
 //! (on both contacts, hence 2P). Only slices with δ_k > 0 carry load.
 
 use super::law::{BoundLaw, ContactLaw, MAX_APPROACH_M};
+use crate::lanes::{F32x4, Real};
 use crate::math::{max, min, ninth_root_in_range, select};
 use crate::params::BearingGeometry;
 
@@ -160,7 +161,7 @@ impl<const S: usize> SlicedRoller<S> {
     #[inline]
     fn evaluate_palmgren(&self, approach_m: f32, tilt_rad: f32) -> RollerLoad {
         let (approach_m, tilt_rad) = bounded(approach_m, tilt_rad);
-        let mut sums = PalmgrenSums::default();
+        let mut sums = PalmgrenSums::zero();
         for (&x, &c) in self.positions_m.iter().zip(self.crown_offsets_m.iter()) {
             let (d, r) = slice_root(approach_m + x * tilt_rad + c);
             sums.add(d, r, x);
@@ -175,12 +176,12 @@ impl<const S: usize> SlicedRoller<S> {
     /// overlaps the slices (2.1× the speed of one roller at a time for 17 rollers). The M4
     /// gains nothing and would pay for the staged roots, so it runs one roller at a time.
     #[inline(always)]
-    fn evaluate_palmgren_lanes<const L: usize>(
+    fn evaluate_palmgren_lanes(
         &self,
-        approach_m: [f32; L],
-        tilt_rad: [f32; L],
-    ) -> [RollerLoad; L] {
-        let mut bounds = [(0.0f32, 0.0f32); L];
+        approach_m: [f32; LANES],
+        tilt_rad: [f32; LANES],
+    ) -> [RollerLoad; LANES] {
+        let mut bounds = [(0.0f32, 0.0f32); LANES];
         for ((b, &a), &t) in bounds
             .iter_mut()
             .zip(approach_m.iter())
@@ -188,8 +189,8 @@ impl<const S: usize> SlicedRoller<S> {
         {
             *b = bounded(a, t);
         }
-        let mut approach = [[0.0f32; L]; S];
-        let mut root = [[0.0f32; L]; S];
+        let mut approach = [[0.0f32; LANES]; S];
+        let mut root = [[0.0f32; LANES]; S];
         for (((d, r), &x), &c) in approach
             .iter_mut()
             .zip(root.iter_mut())
@@ -200,17 +201,19 @@ impl<const S: usize> SlicedRoller<S> {
                 (*d, *r) = slice_root(a + x * t + c);
             }
         }
-        let mut sums = [PalmgrenSums::default(); L];
+        let mut sums = PalmgrenSums::<F32x4>::zero();
         for ((d, r), &x) in approach
             .iter()
             .zip(root.iter())
             .zip(self.positions_m.iter())
         {
-            for ((sums, &d), &r) in sums.iter_mut().zip(d.iter()).zip(r.iter()) {
-                sums.add(d, r, x);
-            }
+            sums.add(
+                F32x4::from_array(*d),
+                F32x4::from_array(*r),
+                F32x4::splat(x),
+            );
         }
-        sums.map(|s| self.load_from(&s))
+        core::array::from_fn(|i| self.load_from(&sums.lane(i)))
     }
 
     /// The roller's load from its Palmgren slice sums.
@@ -270,22 +273,34 @@ fn slice_root(slice_approach: f32) -> (f32, f32) {
 }
 
 /// Σ w, Σ w·x, Σ r, Σ r·x, Σ r·x², Σ r/δ over the slices, with w = δ·r (see
-/// [`SlicedRoller::evaluate`] under the Palmgren law).
-#[derive(Clone, Copy, Default)]
-struct PalmgrenSums([f32; 6]);
+/// [`SlicedRoller::evaluate`] under the Palmgren law), of one roller (`f32`) or of the rollers
+/// in SIMD lanes (`crate::lanes`; each lane the one-roller sums bit for bit).
+#[derive(Clone, Copy)]
+struct PalmgrenSums<T: Real = f32>([T; 6]);
 
-impl PalmgrenSums {
+impl<T: Real> PalmgrenSums<T> {
     #[inline(always)]
-    fn add(&mut self, d: f32, r: f32, x: f32) {
+    fn zero() -> Self {
+        Self([T::splat(0.0); 6])
+    }
+
+    #[inline(always)]
+    fn add(&mut self, d: T, r: T, x: T) {
         let [sw, swx, sk, skx, skxx, sk2] = &mut self.0;
         let w = d * r;
-        *sw += w;
-        *swx += w * x;
-        *sk += r;
+        *sw = *sw + w;
+        *swx = *swx + w * x;
+        *sk = *sk + r;
         let rx = r * x;
-        *skx += rx;
-        *skxx += rx * x;
-        *sk2 += r / d;
+        *skx = *skx + rx;
+        *skxx = *skxx + rx * x;
+        *sk2 = *sk2 + r / d;
+    }
+
+    /// The sums of the roller in lane `i`.
+    #[inline(always)]
+    fn lane(&self, i: usize) -> PalmgrenSums {
+        PalmgrenSums(self.0.map(|s| s.lane(i)))
     }
 }
 

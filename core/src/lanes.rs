@@ -1,0 +1,557 @@
+//! Four f32 lanes side by side, and the arithmetic the step's lockstep stages share with the
+//! one-number code.
+//!
+//! Some stages of a step are the same chain of dependent operations for every roller (the
+//! film–load Newton iterations: two exponentials, two roots, three divisions each). A
+//! superscalar host cannot overlap enough of those chains across rollers to hide their
+//! latency, but it can run four of them in the lanes of one SIMD register. [`Real`] is what
+//! such a stage is written against: `f32` (one roller; the Cortex-M4 path) and [`F32x4`] (four
+//! rollers; SSE on x86-64, a plain lane loop elsewhere) implement it with the same IEEE
+//! operations — `+ − × ÷`, square root, compare-and-select, and integer arithmetic on the bit
+//! pattern — so a lane's result is the one-roller result bit for bit (no fused or approximate
+//! instructions; the tests compare every operation).
+
+use core::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
+
+/// An f32 or f32 lanes: the operations the lockstep stages use, each IEEE-exact per lane.
+pub(crate) trait Real:
+    Copy
+    + core::fmt::Debug
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    /// One truth value per lane.
+    type Mask: Copy + BitAnd<Output = Self::Mask>;
+    /// One `U` per lane.
+    type PerLane<U: Copy + Default + core::fmt::Debug>: Copy + core::fmt::Debug;
+    /// `v` in every lane.
+    fn splat(v: f32) -> Self;
+    /// `self > other` per lane (false where either is NaN).
+    fn gt(self, other: Self) -> Self::Mask;
+    /// `self >= other` per lane.
+    fn ge(self, other: Self) -> Self::Mask;
+    /// `self <= other` per lane.
+    fn le(self, other: Self) -> Self::Mask;
+    /// `a` where `mask`, else `b`, by bit masks (`crate::math::select`).
+    fn select(mask: Self::Mask, a: Self, b: Self) -> Self;
+    /// `a` where `mask`, else `b`: [`Real::select`]'s result, as a plain choice for one
+    /// number (a conditional move where `select` spends bit operations).
+    fn choose(mask: Self::Mask, a: Self, b: Self) -> Self;
+    /// `crate::math::max` per lane: `self` if `self > other`, else `other`.
+    fn max(self, other: Self) -> Self;
+    /// IEEE square root of non-negative lanes.
+    fn sqrt_non_negative(self) -> Self;
+    /// `crate::math::round_with_pow2` per lane.
+    fn round_with_pow2(self) -> (Self, Self);
+    /// `f` of each lane.
+    fn map_lanes<U: Copy + Default + core::fmt::Debug>(
+        self,
+        f: impl FnMut(f32) -> U,
+    ) -> Self::PerLane<U>;
+    /// Lanes from `f` of each per-lane item.
+    fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
+        items: &Self::PerLane<U>,
+        f: impl FnMut(&U) -> f32,
+    ) -> Self;
+    /// `f` of each per-lane item.
+    fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
+        items: &Self::PerLane<U>,
+        f: impl FnMut(&U) -> V,
+    ) -> Self::PerLane<V>;
+    /// Lane `i` (0 beyond the lanes).
+    fn lane(self, i: usize) -> f32;
+    /// Item `i` of per-lane items (the default beyond the lanes).
+    fn item<U: Copy + Default + core::fmt::Debug>(items: &Self::PerLane<U>, i: usize) -> U;
+}
+
+impl Real for f32 {
+    type Mask = bool;
+    type PerLane<U: Copy + Default + core::fmt::Debug> = U;
+    #[inline(always)]
+    fn splat(v: f32) -> Self {
+        v
+    }
+    #[inline(always)]
+    fn gt(self, other: Self) -> bool {
+        self > other
+    }
+    #[inline(always)]
+    fn ge(self, other: Self) -> bool {
+        self >= other
+    }
+    #[inline(always)]
+    fn le(self, other: Self) -> bool {
+        self <= other
+    }
+    #[inline(always)]
+    fn select(mask: bool, a: Self, b: Self) -> Self {
+        crate::math::select(mask, a, b)
+    }
+    #[inline(always)]
+    fn choose(mask: bool, a: Self, b: Self) -> Self {
+        if mask {
+            a
+        } else {
+            b
+        }
+    }
+    #[inline(always)]
+    fn max(self, other: Self) -> Self {
+        crate::math::max(self, other)
+    }
+    #[inline(always)]
+    fn sqrt_non_negative(self) -> Self {
+        crate::math::sqrt_non_negative(self)
+    }
+    #[inline(always)]
+    fn round_with_pow2(self) -> (Self, Self) {
+        crate::math::round_with_pow2(self)
+    }
+    #[inline(always)]
+    fn map_lanes<U: Copy + Default + core::fmt::Debug>(self, mut f: impl FnMut(f32) -> U) -> U {
+        f(self)
+    }
+    #[inline(always)]
+    fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
+        items: &U,
+        mut f: impl FnMut(&U) -> f32,
+    ) -> Self {
+        f(items)
+    }
+    #[inline(always)]
+    fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
+        items: &U,
+        mut f: impl FnMut(&U) -> V,
+    ) -> V {
+        f(items)
+    }
+    #[inline(always)]
+    fn lane(self, i: usize) -> f32 {
+        if i == 0 {
+            self
+        } else {
+            0.0
+        }
+    }
+    #[inline(always)]
+    fn item<U: Copy + Default + core::fmt::Debug>(items: &U, i: usize) -> U {
+        if i == 0 {
+            *items
+        } else {
+            U::default()
+        }
+    }
+}
+
+pub(crate) use simd::F32x4;
+
+/// SSE (baseline on every x86-64): one instruction per operation and lane group.
+///
+/// SAFETY (every `unsafe` block below): the intrinsics are SSE and SSE2 instructions, which
+/// every x86-64 processor has and the x86-64 targets always enable; they operate on registers
+/// only (no memory access) and cannot fail.
+#[cfg(target_arch = "x86_64")]
+mod simd {
+    use super::Real;
+    use core::arch::x86_64::{
+        __m128, _mm_add_epi32, _mm_add_ps, _mm_and_ps, _mm_and_si128, _mm_andnot_ps,
+        _mm_castps_si128, _mm_castsi128_ps, _mm_cmpge_ps, _mm_cmpgt_ps, _mm_cmple_ps, _mm_div_ps,
+        _mm_max_ps, _mm_mul_ps, _mm_or_ps, _mm_set1_epi32, _mm_set1_ps, _mm_set_ps, _mm_slli_epi32,
+        _mm_sqrt_ps, _mm_sub_epi32, _mm_sub_ps, _mm_xor_ps,
+    };
+    use core::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
+
+    /// Four f32 lanes.
+    #[derive(Clone, Copy, Debug)]
+    pub(crate) struct F32x4(__m128);
+
+    /// Four lane masks (all ones or all zeros), as SSE compares give them.
+    #[derive(Clone, Copy, Debug)]
+    pub(crate) struct Mask4(__m128);
+
+    impl F32x4 {
+        /// The lanes of an array, lane 0 first.
+        #[inline(always)]
+        pub(crate) fn from_array(v: [f32; 4]) -> Self {
+            let [a, b, c, d] = v;
+            // Built in registers: four scalar stores read back as one vector would stall on
+            // store-to-load forwarding. (`_mm_set_ps` takes the highest lane first.)
+            Self(unsafe { _mm_set_ps(d, c, b, a) })
+        }
+        /// The lanes as an array, lane 0 first.
+        #[inline(always)]
+        pub(crate) fn to_array(self) -> [f32; 4] {
+            // SAFETY: as in `from_array`.
+            unsafe { core::mem::transmute::<__m128, [f32; 4]>(self.0) }
+        }
+    }
+
+    macro_rules! lane_op {
+        ($trait:ident, $method:ident, $intrinsic:ident) => {
+            impl $trait for F32x4 {
+                type Output = Self;
+                #[inline(always)]
+                fn $method(self, other: Self) -> Self {
+                    // SAFETY: see the module of `F32x4`.
+                    Self(unsafe { $intrinsic(self.0, other.0) })
+                }
+            }
+        };
+    }
+    lane_op!(Add, add, _mm_add_ps);
+    lane_op!(Sub, sub, _mm_sub_ps);
+    lane_op!(Mul, mul, _mm_mul_ps);
+    lane_op!(Div, div, _mm_div_ps);
+
+    impl BitAnd for Mask4 {
+        type Output = Self;
+        #[inline(always)]
+        fn bitand(self, other: Self) -> Self {
+            Self(unsafe { _mm_and_ps(self.0, other.0) })
+        }
+    }
+
+    impl Neg for F32x4 {
+        type Output = Self;
+        /// The sign bit flipped, as f32 negation does.
+        #[inline(always)]
+        fn neg(self) -> Self {
+            Self(unsafe { _mm_xor_ps(self.0, _mm_set1_ps(-0.0)) })
+        }
+    }
+
+    impl Real for F32x4 {
+        type Mask = Mask4;
+        type PerLane<U: Copy + Default + core::fmt::Debug> = [U; 4];
+        #[inline(always)]
+        fn splat(v: f32) -> Self {
+            Self(unsafe { _mm_set1_ps(v) })
+        }
+        #[inline(always)]
+        fn gt(self, other: Self) -> Mask4 {
+            Mask4(unsafe { _mm_cmpgt_ps(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn ge(self, other: Self) -> Mask4 {
+            Mask4(unsafe { _mm_cmpge_ps(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn le(self, other: Self) -> Mask4 {
+            Mask4(unsafe { _mm_cmple_ps(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn select(mask: Mask4, a: Self, b: Self) -> Self {
+            Self(unsafe { _mm_or_ps(_mm_and_ps(mask.0, a.0), _mm_andnot_ps(mask.0, b.0)) })
+        }
+        #[inline(always)]
+        fn choose(mask: Mask4, a: Self, b: Self) -> Self {
+            Self::select(mask, a, b)
+        }
+        #[inline(always)]
+        fn max(self, other: Self) -> Self {
+            // MAXPS returns its second operand unless the first is greater (also for NaN and
+            // equal zeros): `math::max` exactly.
+            Self(unsafe { _mm_max_ps(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn sqrt_non_negative(self) -> Self {
+            Self(unsafe { _mm_sqrt_ps(self.0) })
+        }
+        #[inline(always)]
+        fn round_with_pow2(self) -> (Self, Self) {
+            // `math::round_with_pow2` lane by lane: the same float sum and the same integer
+            // arithmetic on its bit pattern (wrapping, as there).
+            unsafe {
+                let rounder = _mm_set1_ps(crate::math::ROUNDER);
+                let shifted = _mm_add_ps(self.0, rounder);
+                let n = _mm_sub_ps(shifted, rounder);
+                let biased = _mm_add_epi32(
+                    _mm_sub_epi32(_mm_castps_si128(shifted), _mm_castps_si128(rounder)),
+                    _mm_set1_epi32(127),
+                );
+                let pow2 = _mm_slli_epi32::<23>(_mm_and_si128(biased, _mm_set1_epi32(0xff)));
+                (Self(n), Self(_mm_castsi128_ps(pow2)))
+            }
+        }
+        #[inline(always)]
+        fn map_lanes<U: Copy + Default + core::fmt::Debug>(
+            self,
+            f: impl FnMut(f32) -> U,
+        ) -> [U; 4] {
+            self.to_array().map(f)
+        }
+        #[inline(always)]
+        fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
+            items: &[U; 4],
+            f: impl FnMut(&U) -> f32,
+        ) -> Self {
+            Self::from_array(items.each_ref().map(f))
+        }
+        #[inline(always)]
+        fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
+            items: &[U; 4],
+            f: impl FnMut(&U) -> V,
+        ) -> [V; 4] {
+            items.each_ref().map(f)
+        }
+        #[inline(always)]
+        fn lane(self, i: usize) -> f32 {
+            self.to_array().get(i).copied().unwrap_or(0.0)
+        }
+        #[inline(always)]
+        fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; 4], i: usize) -> U {
+            items.get(i).copied().unwrap_or_default()
+        }
+    }
+}
+
+/// Elsewhere: four lanes in an array, each operation a loop over them (which the compiler may
+/// vectorise) calling the one-number operation.
+#[cfg(not(target_arch = "x86_64"))]
+mod simd {
+    use super::Real;
+    use core::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
+
+    /// Four f32 lanes.
+    #[derive(Clone, Copy, Debug)]
+    pub(crate) struct F32x4([f32; 4]);
+
+    impl Neg for F32x4 {
+        type Output = Self;
+        #[inline(always)]
+        fn neg(self) -> Self {
+            Self(self.0.map(|v| -v))
+        }
+    }
+
+    /// Four lane masks.
+    #[derive(Clone, Copy, Debug)]
+    pub(crate) struct Mask4([bool; 4]);
+
+    impl F32x4 {
+        /// The lanes of an array, lane 0 first.
+        #[inline(always)]
+        pub(crate) fn from_array(v: [f32; 4]) -> Self {
+            Self(v)
+        }
+        /// The lanes as an array, lane 0 first.
+        #[inline(always)]
+        pub(crate) fn to_array(self) -> [f32; 4] {
+            self.0
+        }
+        #[inline(always)]
+        fn zip(self, other: Self, f: impl Fn(f32, f32) -> f32) -> Self {
+            let [a, b, c, d] = self.0;
+            let [e, g, h, k] = other.0;
+            Self([f(a, e), f(b, g), f(c, h), f(d, k)])
+        }
+        #[inline(always)]
+        fn compare(self, other: Self, f: impl Fn(f32, f32) -> bool) -> Mask4 {
+            let [a, b, c, d] = self.0;
+            let [e, g, h, k] = other.0;
+            Mask4([f(a, e), f(b, g), f(c, h), f(d, k)])
+        }
+    }
+
+    impl Add for F32x4 {
+        type Output = Self;
+        #[inline(always)]
+        fn add(self, other: Self) -> Self {
+            self.zip(other, |a, b| a + b)
+        }
+    }
+    impl Sub for F32x4 {
+        type Output = Self;
+        #[inline(always)]
+        fn sub(self, other: Self) -> Self {
+            self.zip(other, |a, b| a - b)
+        }
+    }
+    impl Mul for F32x4 {
+        type Output = Self;
+        #[inline(always)]
+        fn mul(self, other: Self) -> Self {
+            self.zip(other, |a, b| a * b)
+        }
+    }
+    impl Div for F32x4 {
+        type Output = Self;
+        #[inline(always)]
+        fn div(self, other: Self) -> Self {
+            self.zip(other, |a, b| a / b)
+        }
+    }
+    impl BitAnd for Mask4 {
+        type Output = Self;
+        #[inline(always)]
+        fn bitand(self, other: Self) -> Self {
+            let [a, b, c, d] = self.0;
+            let [e, g, h, k] = other.0;
+            Self([a & e, b & g, c & h, d & k])
+        }
+    }
+
+    impl Real for F32x4 {
+        type Mask = Mask4;
+        type PerLane<U: Copy + Default + core::fmt::Debug> = [U; 4];
+        #[inline(always)]
+        fn splat(v: f32) -> Self {
+            Self([v; 4])
+        }
+        #[inline(always)]
+        fn gt(self, other: Self) -> Mask4 {
+            self.compare(other, |a, b| a > b)
+        }
+        #[inline(always)]
+        fn ge(self, other: Self) -> Mask4 {
+            self.compare(other, |a, b| a >= b)
+        }
+        #[inline(always)]
+        fn le(self, other: Self) -> Mask4 {
+            self.compare(other, |a, b| a <= b)
+        }
+        #[inline(always)]
+        fn select(mask: Mask4, a: Self, b: Self) -> Self {
+            let [m0, m1, m2, m3] = mask.0;
+            let [a0, a1, a2, a3] = a.0;
+            let [b0, b1, b2, b3] = b.0;
+            let s = crate::math::select;
+            Self([s(m0, a0, b0), s(m1, a1, b1), s(m2, a2, b2), s(m3, a3, b3)])
+        }
+        #[inline(always)]
+        fn choose(mask: Mask4, a: Self, b: Self) -> Self {
+            Self::select(mask, a, b)
+        }
+        #[inline(always)]
+        fn max(self, other: Self) -> Self {
+            self.zip(other, crate::math::max)
+        }
+        #[inline(always)]
+        fn sqrt_non_negative(self) -> Self {
+            Self(self.0.map(crate::math::sqrt_non_negative))
+        }
+        #[inline(always)]
+        fn round_with_pow2(self) -> (Self, Self) {
+            let r = self.0.map(crate::math::round_with_pow2);
+            (Self(r.map(|p| p.0)), Self(r.map(|p| p.1)))
+        }
+        #[inline(always)]
+        fn map_lanes<U: Copy + Default + core::fmt::Debug>(
+            self,
+            f: impl FnMut(f32) -> U,
+        ) -> [U; 4] {
+            self.0.map(f)
+        }
+        #[inline(always)]
+        fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
+            items: &[U; 4],
+            f: impl FnMut(&U) -> f32,
+        ) -> Self {
+            Self(items.each_ref().map(f))
+        }
+        #[inline(always)]
+        fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
+            items: &[U; 4],
+            f: impl FnMut(&U) -> V,
+        ) -> [V; 4] {
+            items.each_ref().map(f)
+        }
+        #[inline(always)]
+        fn lane(self, i: usize) -> f32 {
+            self.to_array().get(i).copied().unwrap_or(0.0)
+        }
+        #[inline(always)]
+        fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; 4], i: usize) -> U {
+            items.get(i).copied().unwrap_or_default()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every lane operation gives the one-number operation's bits, over values that cover
+    /// signs, zeros of both signs, subnormals, large magnitudes, infinities and NaN.
+    #[test]
+    fn lanes_are_the_one_number_operations_bit_for_bit() {
+        let specials = [
+            0.0f32,
+            -0.0,
+            1.0,
+            -1.0,
+            0.5,
+            1.5e-39,
+            -3.0e-41,
+            1.0e-30,
+            3.4e38,
+            -3.4e38,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            126.7,
+            -125.2,
+            12.5,
+            2.0e22,
+        ];
+        let mut values = [0.0f32; 64];
+        let mut state = 0x2545_f491_u32;
+        for (k, v) in values.iter_mut().enumerate() {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            *v = specials.get(k).copied().unwrap_or(
+                f32::from_bits(state & 0x7fff_ffff) * if k % 2 == 0 { 1.0 } else { -1.0 },
+            );
+        }
+        let bits = |v: f32| if v.is_nan() { u32::MAX } else { v.to_bits() };
+        for a in values.chunks_exact(4) {
+            for b in values.chunks_exact(4) {
+                let a: [f32; 4] = a.try_into().unwrap();
+                let b: [f32; 4] = b.try_into().unwrap();
+                let (va, vb) = (F32x4::from_array(a), F32x4::from_array(b));
+                let lanes = [
+                    (va + vb).to_array(),
+                    (va - vb).to_array(),
+                    (va * vb).to_array(),
+                    (va / vb).to_array(),
+                    (-va).to_array(),
+                    va.max(vb).to_array(),
+                    F32x4::select(va.gt(vb) & vb.le(va), va, vb).to_array(),
+                    F32x4::select(va.ge(vb), va, vb).to_array(),
+                ];
+                for i in 0..4 {
+                    let (x, y) = (a[i], b[i]);
+                    let one = [
+                        x + y,
+                        x - y,
+                        x * y,
+                        x / y,
+                        -x,
+                        crate::math::max(x, y),
+                        crate::math::select((x > y) & (y <= x), x, y),
+                        crate::math::select(x >= y, x, y),
+                    ];
+                    for (l, o) in lanes.iter().zip(one) {
+                        assert_eq!(bits(l[i]), bits(o), "{x} {y}");
+                    }
+                }
+                let root = F32x4::from_array(a.map(f32::abs))
+                    .sqrt_non_negative()
+                    .to_array();
+                let (n, p) = F32x4::from_array(a.map(|v| v.clamp(-126.0, 127.0))).round_with_pow2();
+                for i in 0..4 {
+                    assert_eq!(
+                        bits(root[i]),
+                        bits(crate::math::sqrt_non_negative(a[i].abs()))
+                    );
+                    let (n1, p1) = crate::math::round_with_pow2(a[i].clamp(-126.0, 127.0));
+                    assert_eq!((bits(n.lane(i)), bits(p.lane(i))), (bits(n1), bits(p1)));
+                }
+            }
+        }
+    }
+}
