@@ -168,3 +168,69 @@ fn pipeline_model_meets_accuracy_targets() {
         );
     }
 }
+
+/// The core's integer network (on x86-64 computed in exact f64 lanes, `exact_f64`) gives the
+/// output codes of the plain definition, written out here from the model file's quantised
+/// layers: i64 sums row by row from the bias, `⌊(A·m + 2^(s−1))/2^s⌋` in i128 saturated to
+/// i16, the table lookup between hidden layers. Inputs: every test-set contact (prepared and
+/// quantised as `AnnInt` does), 4⁵ corner inputs from {−32768, −32767, 0, 32767} and 5000
+/// random codes.
+#[test]
+fn core_int_codes_match_the_i64_definition() {
+    use bearing_core::film::ann::int::{lut_lookup, quantise_input, Lut};
+    let m = model();
+    let q = m.quantised.as_ref().unwrap();
+    let lut: Lut = q.lut.as_slice().try_into().unwrap();
+    let reference = |x: &[i16; 5]| -> [i16; 2] {
+        let mut a: Vec<i16> = x.to_vec();
+        for (k, l) in q.layers.iter().enumerate() {
+            a = l
+                .weights
+                .iter()
+                .zip(&l.bias)
+                .map(|(row, b)| {
+                    let mut acc: i64 = *b;
+                    for (w, v) in row.iter().zip(&a) {
+                        acc += i64::from(*w) * i64::from(*v);
+                    }
+                    let p = i128::from(acc) * i128::from(l.multiplier) + (1i128 << (l.shift - 1));
+                    let z = (p >> l.shift).clamp(-32768, 32767) as i16;
+                    if k + 1 < q.layers.len() {
+                        lut_lookup(&lut, z)
+                    } else {
+                        z
+                    }
+                })
+                .collect();
+        }
+        [a[0], a[1]]
+    };
+    let mut inputs: Vec<[i16; 5]> = test_set(&m)
+        .cases
+        .iter()
+        .map(|c| ann::prepare(&c.to_core()).features.map(quantise_input))
+        .collect();
+    assert_eq!(inputs.len(), 750);
+    let corners = [i16::MIN, -32767, 0, 32767];
+    for k in 0..4usize.pow(5) {
+        inputs.push(core::array::from_fn(|i| corners[(k >> (2 * i)) % 4]));
+    }
+    // SplitMix64 (Steele, Lea & Flood 2014).
+    let mut state = 20261121u64;
+    for _ in 0..5000 {
+        inputs.push(core::array::from_fn(|_| {
+            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            (z ^ (z >> 31)) as i16
+        }));
+    }
+    for x in &inputs {
+        assert_eq!(
+            ann::model_weights::forward_int(x),
+            reference(x),
+            "input {x:?}"
+        );
+    }
+}

@@ -250,9 +250,9 @@ pub fn render(model: &ModelFile) -> Result<String> {
         )?;
         writeln!(
             o,
-            "pub static INT_LAYER_{k}: DenseInt<{i}, {out}> = DenseInt {{"
+            "pub static INT_LAYER_{k}: DenseInt<{i}, {out}> = DenseInt::new("
         )?;
-        writeln!(o, "    weights: [")?;
+        writeln!(o, "    [")?;
         for row in &l.weights {
             writeln!(
                 o,
@@ -266,16 +266,16 @@ pub fn render(model: &ModelFile) -> Result<String> {
         writeln!(o, "    ],")?;
         writeln!(
             o,
-            "    bias: [{}],",
+            "    [{}],",
             l.bias
                 .iter()
                 .map(|v| v.to_string())
                 .collect::<Vec<_>>()
                 .join(", ")
         )?;
-        writeln!(o, "    multiplier: {},", l.multiplier)?;
-        writeln!(o, "    shift: {},", l.shift)?;
-        writeln!(o, "}};")?;
+        writeln!(o, "    {},", l.multiplier)?;
+        writeln!(o, "    {},", l.shift)?;
+        writeln!(o, ");")?;
     }
     if !q.lut.is_empty() {
         writeln!(o)?;

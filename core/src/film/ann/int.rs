@@ -1,15 +1,23 @@
 //! Integer inference (TFLite-style symmetric quantisation, EMBEDDED.md): int16 weights and
-//! activations, i64 accumulators, per-layer requantisation by a Q23 multiplier and a right
-//! shift with rounding and saturation, hidden activations by a 1025-point lookup table with
-//! linear interpolation.
+//! activations, exact integer accumulators, per-layer requantisation by a Q23 multiplier and a
+//! right shift with rounding and saturation, hidden activations by a 1025-point lookup table
+//! with linear interpolation.
 //!
 //! Scales (real = scale · q): inputs and tanh/logistic activations use 1/32767; a layer's
 //! weights `s_w = max|W|/32767`; its biases are stored at the accumulator scale `s_in·s_w`. The
 //! requantisation maps the accumulator to the table's input scale (tanh: 8/32768, i.e. the table
 //! spans [−8, 8); logistic: 16/32768) or to the output scale, multiplying by
 //! `s_in·s_w/s_target = multiplier · 2^−shift`. The host quantiser guarantees
-//! `|acc| < 2⁴⁰` and `multiplier < 2²³`, so the product fits in i64; all arithmetic is
-//! wrapping or saturating, so nothing here can panic.
+//! `|acc| < 2⁴⁰` and `multiplier < 2²³`, so the product fits in i64.
+//!
+//! The definition is the plain i64 formula, [`DenseInt::forward_linear_i64`]: each row summed
+//! from its bias (i16·i16 products exact in i32, widened to i64), then [`requantize`]. The
+//! Cortex-M4 runs it as written (fixed cost, no data-dependent branch). On x86-64 the same
+//! integers are carried in f64 lanes ([`super::exact_f64`]): SSE2 has no 64-bit integer
+//! multiply, while every partial sum here is an integer below 2⁴⁰ and thus exact in f64, and
+//! the requantisation is rebuilt from exact f64 steps — the codes are identical, which the tests
+//! check against the i64 formula. All arithmetic is wrapping, saturating or exact, so nothing
+//! here can panic.
 
 /// Number of table segments is `2^LUT_SEGMENT_BITS`.
 pub const LUT_SEGMENT_BITS: u32 = 10;
@@ -55,7 +63,9 @@ pub fn lut_lookup(table: &Lut, z: i16) -> i16 {
     (a + step) as i16
 }
 
-/// A quantised dense layer with `I` inputs and `O` outputs.
+/// A quantised dense layer with `I` inputs and `O` outputs. Build it with [`DenseInt::new`]
+/// (the generated layers are statics): on x86-64 it also holds the converted copy the host path
+/// computes with, so a field changed afterwards would not reach that path.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DenseInt<const I: usize, const O: usize> {
     /// `weights[o][i]`, scale `s_w`.
@@ -66,9 +76,24 @@ pub struct DenseInt<const I: usize, const O: usize> {
     pub multiplier: i32,
     /// Right shift of the requantisation.
     pub shift: u32,
+    /// The same layer in exact f64 lanes (host path, [`super::exact_f64`]).
+    #[cfg(target_arch = "x86_64")]
+    exact: super::exact_f64::ExactF64<I, O>,
 }
 
 impl<const I: usize, const O: usize> DenseInt<I, O> {
+    /// The layer from its generated parts (a `const fn`: the layers are statics).
+    pub const fn new(weights: [[i16; I]; O], bias: [i64; O], multiplier: i32, shift: u32) -> Self {
+        Self {
+            #[cfg(target_arch = "x86_64")]
+            exact: super::exact_f64::ExactF64::new(&weights, &bias, multiplier, shift),
+            weights,
+            bias,
+            multiplier,
+            shift,
+        }
+    }
+
     /// Accumulators `b + Σ w·x` (i16·i16 products are exact in i32).
     #[inline]
     pub fn accumulate(&self, x: &[i16; I]) -> [i64; O] {
@@ -81,9 +106,11 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
         out
     }
 
-    /// Requantised accumulators (the output layer, or the table input).
+    /// Requantised accumulators by the plain i64 formula: [`Self::accumulate`], then
+    /// [`requantize`]. The path of every target but x86-64 (the Cortex-M4), and on the host the
+    /// reference the f64 lanes are tested against.
     #[inline]
-    pub fn forward_linear(&self, x: &[i16; I]) -> [i16; O] {
+    pub fn forward_linear_i64(&self, x: &[i16; I]) -> [i16; O] {
         let acc = self.accumulate(x);
         let mut out = [0i16; O];
         for (o, a) in out.iter_mut().zip(acc) {
@@ -92,14 +119,45 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
         out
     }
 
+    /// Requantised accumulators (the output layer, or the table input), bit for bit
+    /// [`Self::forward_linear_i64`]; on x86-64 computed in exact f64 lanes
+    /// ([`super::exact_f64`]).
+    #[inline]
+    pub fn forward_linear(&self, x: &[i16; I]) -> [i16; O] {
+        #[cfg(target_arch = "x86_64")]
+        {
+            let mut out = [0i16; O];
+            for (o, q) in out.iter_mut().zip(self.exact.forward_linear_bits(x)) {
+                // The low 16 bits hold the code (`ExactF64::requantize_bits`).
+                *o = q as i16;
+            }
+            out
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        self.forward_linear_i64(x)
+    }
+
     /// Hidden layer with a table activation.
     #[inline]
     pub fn forward_lut(&self, x: &[i16; I], table: &Lut) -> [i16; O] {
-        let mut z = self.forward_linear(x);
-        for v in z.iter_mut() {
-            *v = lut_lookup(table, *v);
+        // On x86-64 the table is read straight from the requantised codes: going through an
+        // i16 array first lets LLVM vectorise the lookups into a slower gather by shuffles.
+        #[cfg(target_arch = "x86_64")]
+        {
+            let mut out = [0i16; O];
+            for (o, q) in out.iter_mut().zip(self.exact.forward_linear_bits(x)) {
+                *o = lut_lookup(table, q as i16);
+            }
+            out
         }
-        z
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let mut z = self.forward_linear_i64(x);
+            for v in z.iter_mut() {
+                *v = lut_lookup(table, *v);
+            }
+            z
+        }
     }
 
     /// Hidden ReLU layer (requantised straight to the activation scale).
@@ -115,7 +173,50 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::model_weights as model;
     use super::*;
+
+    /// Random and extreme inputs for a layer of width `I` (SplitMix64, Steele, Lea & Flood
+    /// 2014; every other input drawn from {−32768, −32767, 0, 32767}).
+    fn inputs<const I: usize>(n: usize) -> impl Iterator<Item = [i16; I]> {
+        let mut state = 99u64;
+        (0..n).map(move |k| {
+            core::array::from_fn(|_| {
+                state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+                let mut z = state;
+                z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+                z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+                z ^= z >> 31;
+                if k % 2 == 0 {
+                    [i16::MIN, -32767, 0, 32767][(z % 4) as usize]
+                } else {
+                    z as i16
+                }
+            })
+        })
+    }
+
+    /// The dispatched layer (exact f64 lanes on x86-64) and the plain i64 path give the same
+    /// codes on every layer of the compiled model, linear and with the table (reference: the
+    /// i64 path, the definition the Cortex-M4 runs).
+    #[test]
+    fn both_paths_give_the_same_codes() {
+        for x in inputs::<5>(3000) {
+            let l = &model::INT_LAYER_0;
+            assert_eq!(l.forward_linear(&x), l.forward_linear_i64(&x), "{x:?}");
+            let mut want = l.forward_linear_i64(&x);
+            for v in want.iter_mut() {
+                *v = lut_lookup(&model::LUT, *v);
+            }
+            assert_eq!(l.forward_lut(&x, &model::LUT), want, "{x:?}");
+        }
+        for x in inputs::<10>(3000) {
+            let l = &model::INT_LAYER_1;
+            assert_eq!(l.forward_linear(&x), l.forward_linear_i64(&x), "{x:?}");
+            let l = &model::INT_LAYER_2;
+            assert_eq!(l.forward_linear(&x), l.forward_linear_i64(&x), "{x:?}");
+        }
+    }
 
     /// Requantisation against exact rational arithmetic: acc · m / 2^s rounded half up, and
     /// saturation at the i16 limits.
