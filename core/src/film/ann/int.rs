@@ -13,7 +13,7 @@
 //! The definition is the plain i64 formula, [`DenseInt::forward_linear_i64`]: each row summed
 //! from its bias (i16·i16 products exact in i32, widened to i64), then [`requantize`]. The
 //! Cortex-M4 runs it as written (fixed cost, no data-dependent branch). On x86-64 the same
-//! integers are carried in f64 lanes ([`super::exact_f64`]): SSE2 has no 64-bit integer
+//! integers are carried in f64 lanes (`exact_f64`): SSE2 has no 64-bit integer
 //! multiply, while every partial sum here is an integer below 2⁴⁰ and thus exact in f64, and
 //! the requantisation is rebuilt from exact f64 steps — the codes are identical, which the tests
 //! check against the i64 formula. All arithmetic is wrapping, saturating or exact, so nothing
@@ -76,7 +76,7 @@ pub struct DenseInt<const I: usize, const O: usize> {
     pub multiplier: i32,
     /// Right shift of the requantisation.
     pub shift: u32,
-    /// The same layer in exact f64 lanes (host path, [`super::exact_f64`]).
+    /// The same layer in exact f64 lanes (host path, `exact_f64`).
     #[cfg(target_arch = "x86_64")]
     exact: super::exact_f64::ExactF64<I, O>,
 }
@@ -121,7 +121,7 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
 
     /// Requantised accumulators (the output layer, or the table input), bit for bit
     /// [`Self::forward_linear_i64`]; on x86-64 computed in exact f64 lanes
-    /// ([`super::exact_f64`]).
+    /// (`exact_f64`).
     #[inline]
     pub fn forward_linear(&self, x: &[i16; I]) -> [i16; O] {
         #[cfg(target_arch = "x86_64")]
