@@ -146,7 +146,76 @@ impl Real for f32 {
     }
 }
 
-pub(crate) use simd::F32x4;
+pub(crate) use simd::{F32x4, Mask4};
+
+/// Each backend (`simd`) gives the per-lane primitives; what handles the lanes as an array is
+/// the same for both and lives here once.
+impl Real for F32x4 {
+    type Mask = Mask4;
+    type PerLane<U: Copy + Default + core::fmt::Debug> = [U; 4];
+    #[inline(always)]
+    fn splat(v: f32) -> Self {
+        simd::splat(v)
+    }
+    #[inline(always)]
+    fn gt(self, other: Self) -> Mask4 {
+        simd::gt(self, other)
+    }
+    #[inline(always)]
+    fn ge(self, other: Self) -> Mask4 {
+        simd::ge(self, other)
+    }
+    #[inline(always)]
+    fn le(self, other: Self) -> Mask4 {
+        simd::le(self, other)
+    }
+    #[inline(always)]
+    fn select(mask: Mask4, a: Self, b: Self) -> Self {
+        simd::select(mask, a, b)
+    }
+    #[inline(always)]
+    fn choose(mask: Mask4, a: Self, b: Self) -> Self {
+        simd::select(mask, a, b)
+    }
+    #[inline(always)]
+    fn max(self, other: Self) -> Self {
+        simd::max(self, other)
+    }
+    #[inline(always)]
+    fn sqrt_non_negative(self) -> Self {
+        simd::sqrt_non_negative(self)
+    }
+    #[inline(always)]
+    fn round_with_pow2(self) -> (Self, Self) {
+        simd::round_with_pow2(self)
+    }
+    #[inline(always)]
+    fn map_lanes<U: Copy + Default + core::fmt::Debug>(self, f: impl FnMut(f32) -> U) -> [U; 4] {
+        self.to_array().map(f)
+    }
+    #[inline(always)]
+    fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
+        items: &[U; 4],
+        f: impl FnMut(&U) -> f32,
+    ) -> Self {
+        Self::from_array(items.each_ref().map(f))
+    }
+    #[inline(always)]
+    fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
+        items: &[U; 4],
+        f: impl FnMut(&U) -> V,
+    ) -> [V; 4] {
+        items.each_ref().map(f)
+    }
+    #[inline(always)]
+    fn lane(self, i: usize) -> f32 {
+        self.to_array().get(i).copied().unwrap_or(0.0)
+    }
+    #[inline(always)]
+    fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; 4], i: usize) -> U {
+        items.get(i).copied().unwrap_or_default()
+    }
+}
 
 /// SSE (baseline on every x86-64): one instruction per operation and lane group.
 ///
@@ -155,7 +224,6 @@ pub(crate) use simd::F32x4;
 /// only (no memory access) and cannot fail.
 #[cfg(target_arch = "x86_64")]
 mod simd {
-    use super::Real;
     use core::arch::x86_64::{
         __m128, _mm_add_epi32, _mm_add_ps, _mm_and_ps, _mm_and_si128, _mm_andnot_ps,
         _mm_castps_si128, _mm_castsi128_ps, _mm_cmpge_ps, _mm_cmpgt_ps, _mm_cmple_ps, _mm_div_ps,
@@ -184,7 +252,8 @@ mod simd {
         /// The lanes as an array, lane 0 first.
         #[inline(always)]
         pub(crate) fn to_array(self) -> [f32; 4] {
-            // SAFETY: as in `from_array`.
+            // SAFETY: `__m128` and `[f32; 4]` are both 16 bytes holding four f32 in lane
+            // order; `transmute` moves the value and assumes no alignment.
             unsafe { core::mem::transmute::<__m128, [f32; 4]>(self.0) }
         }
     }
@@ -223,87 +292,50 @@ mod simd {
         }
     }
 
-    impl Real for F32x4 {
-        type Mask = Mask4;
-        type PerLane<U: Copy + Default + core::fmt::Debug> = [U; 4];
-        #[inline(always)]
-        fn splat(v: f32) -> Self {
-            Self(unsafe { _mm_set1_ps(v) })
-        }
-        #[inline(always)]
-        fn gt(self, other: Self) -> Mask4 {
-            Mask4(unsafe { _mm_cmpgt_ps(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn ge(self, other: Self) -> Mask4 {
-            Mask4(unsafe { _mm_cmpge_ps(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn le(self, other: Self) -> Mask4 {
-            Mask4(unsafe { _mm_cmple_ps(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn select(mask: Mask4, a: Self, b: Self) -> Self {
-            Self(unsafe { _mm_or_ps(_mm_and_ps(mask.0, a.0), _mm_andnot_ps(mask.0, b.0)) })
-        }
-        #[inline(always)]
-        fn choose(mask: Mask4, a: Self, b: Self) -> Self {
-            Self::select(mask, a, b)
-        }
-        #[inline(always)]
-        fn max(self, other: Self) -> Self {
-            // MAXPS returns its second operand unless the first is greater (also for NaN and
-            // equal zeros): `math::max` exactly.
-            Self(unsafe { _mm_max_ps(self.0, other.0) })
-        }
-        #[inline(always)]
-        fn sqrt_non_negative(self) -> Self {
-            Self(unsafe { _mm_sqrt_ps(self.0) })
-        }
-        #[inline(always)]
-        fn round_with_pow2(self) -> (Self, Self) {
-            // `math::round_with_pow2` lane by lane: the same float sum and the same integer
-            // arithmetic on its bit pattern (wrapping, as there).
-            unsafe {
-                let rounder = _mm_set1_ps(crate::math::ROUNDER);
-                let shifted = _mm_add_ps(self.0, rounder);
-                let n = _mm_sub_ps(shifted, rounder);
-                let biased = _mm_add_epi32(
-                    _mm_sub_epi32(_mm_castps_si128(shifted), _mm_castps_si128(rounder)),
-                    _mm_set1_epi32(127),
-                );
-                let pow2 = _mm_slli_epi32::<23>(_mm_and_si128(biased, _mm_set1_epi32(0xff)));
-                (Self(n), Self(_mm_castsi128_ps(pow2)))
-            }
-        }
-        #[inline(always)]
-        fn map_lanes<U: Copy + Default + core::fmt::Debug>(
-            self,
-            f: impl FnMut(f32) -> U,
-        ) -> [U; 4] {
-            self.to_array().map(f)
-        }
-        #[inline(always)]
-        fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
-            items: &[U; 4],
-            f: impl FnMut(&U) -> f32,
-        ) -> Self {
-            Self::from_array(items.each_ref().map(f))
-        }
-        #[inline(always)]
-        fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
-            items: &[U; 4],
-            f: impl FnMut(&U) -> V,
-        ) -> [V; 4] {
-            items.each_ref().map(f)
-        }
-        #[inline(always)]
-        fn lane(self, i: usize) -> f32 {
-            self.to_array().get(i).copied().unwrap_or(0.0)
-        }
-        #[inline(always)]
-        fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; 4], i: usize) -> U {
-            items.get(i).copied().unwrap_or_default()
+    #[inline(always)]
+    pub(super) fn splat(v: f32) -> F32x4 {
+        F32x4(unsafe { _mm_set1_ps(v) })
+    }
+    #[inline(always)]
+    pub(super) fn gt(a: F32x4, b: F32x4) -> Mask4 {
+        Mask4(unsafe { _mm_cmpgt_ps(a.0, b.0) })
+    }
+    #[inline(always)]
+    pub(super) fn ge(a: F32x4, b: F32x4) -> Mask4 {
+        Mask4(unsafe { _mm_cmpge_ps(a.0, b.0) })
+    }
+    #[inline(always)]
+    pub(super) fn le(a: F32x4, b: F32x4) -> Mask4 {
+        Mask4(unsafe { _mm_cmple_ps(a.0, b.0) })
+    }
+    #[inline(always)]
+    pub(super) fn select(mask: Mask4, a: F32x4, b: F32x4) -> F32x4 {
+        F32x4(unsafe { _mm_or_ps(_mm_and_ps(mask.0, a.0), _mm_andnot_ps(mask.0, b.0)) })
+    }
+    #[inline(always)]
+    pub(super) fn max(a: F32x4, b: F32x4) -> F32x4 {
+        // MAXPS returns its second operand unless the first is greater (also for NaN and
+        // equal zeros): `math::max` exactly.
+        F32x4(unsafe { _mm_max_ps(a.0, b.0) })
+    }
+    #[inline(always)]
+    pub(super) fn sqrt_non_negative(a: F32x4) -> F32x4 {
+        F32x4(unsafe { _mm_sqrt_ps(a.0) })
+    }
+    #[inline(always)]
+    pub(super) fn round_with_pow2(a: F32x4) -> (F32x4, F32x4) {
+        // `math::round_with_pow2` lane by lane: the same float sum and the same integer
+        // arithmetic on its bit pattern (wrapping, as there).
+        unsafe {
+            let rounder = _mm_set1_ps(crate::math::ROUNDER);
+            let shifted = _mm_add_ps(a.0, rounder);
+            let n = _mm_sub_ps(shifted, rounder);
+            let biased = _mm_add_epi32(
+                _mm_sub_epi32(_mm_castps_si128(shifted), _mm_castps_si128(rounder)),
+                _mm_set1_epi32(127),
+            );
+            let pow2 = _mm_slli_epi32::<23>(_mm_and_si128(biased, _mm_set1_epi32(0xff)));
+            (F32x4(n), F32x4(_mm_castsi128_ps(pow2)))
         }
     }
 }
@@ -312,20 +344,11 @@ mod simd {
 /// vectorise) calling the one-number operation.
 #[cfg(not(target_arch = "x86_64"))]
 mod simd {
-    use super::Real;
     use core::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
 
     /// Four f32 lanes.
     #[derive(Clone, Copy, Debug)]
     pub(crate) struct F32x4([f32; 4]);
-
-    impl Neg for F32x4 {
-        type Output = Self;
-        #[inline(always)]
-        fn neg(self) -> Self {
-            Self(self.0.map(|v| -v))
-        }
-    }
 
     /// Four lane masks.
     #[derive(Clone, Copy, Debug)]
@@ -384,6 +407,13 @@ mod simd {
             self.zip(other, |a, b| a / b)
         }
     }
+    impl Neg for F32x4 {
+        type Output = Self;
+        #[inline(always)]
+        fn neg(self) -> Self {
+            Self(self.0.map(|v| -v))
+        }
+    }
     impl BitAnd for Mask4 {
         type Output = Self;
         #[inline(always)]
@@ -394,79 +424,42 @@ mod simd {
         }
     }
 
-    impl Real for F32x4 {
-        type Mask = Mask4;
-        type PerLane<U: Copy + Default + core::fmt::Debug> = [U; 4];
-        #[inline(always)]
-        fn splat(v: f32) -> Self {
-            Self([v; 4])
-        }
-        #[inline(always)]
-        fn gt(self, other: Self) -> Mask4 {
-            self.compare(other, |a, b| a > b)
-        }
-        #[inline(always)]
-        fn ge(self, other: Self) -> Mask4 {
-            self.compare(other, |a, b| a >= b)
-        }
-        #[inline(always)]
-        fn le(self, other: Self) -> Mask4 {
-            self.compare(other, |a, b| a <= b)
-        }
-        #[inline(always)]
-        fn select(mask: Mask4, a: Self, b: Self) -> Self {
-            let [m0, m1, m2, m3] = mask.0;
-            let [a0, a1, a2, a3] = a.0;
-            let [b0, b1, b2, b3] = b.0;
-            let s = crate::math::select;
-            Self([s(m0, a0, b0), s(m1, a1, b1), s(m2, a2, b2), s(m3, a3, b3)])
-        }
-        #[inline(always)]
-        fn choose(mask: Mask4, a: Self, b: Self) -> Self {
-            Self::select(mask, a, b)
-        }
-        #[inline(always)]
-        fn max(self, other: Self) -> Self {
-            self.zip(other, crate::math::max)
-        }
-        #[inline(always)]
-        fn sqrt_non_negative(self) -> Self {
-            Self(self.0.map(crate::math::sqrt_non_negative))
-        }
-        #[inline(always)]
-        fn round_with_pow2(self) -> (Self, Self) {
-            let r = self.0.map(crate::math::round_with_pow2);
-            (Self(r.map(|p| p.0)), Self(r.map(|p| p.1)))
-        }
-        #[inline(always)]
-        fn map_lanes<U: Copy + Default + core::fmt::Debug>(
-            self,
-            f: impl FnMut(f32) -> U,
-        ) -> [U; 4] {
-            self.0.map(f)
-        }
-        #[inline(always)]
-        fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
-            items: &[U; 4],
-            f: impl FnMut(&U) -> f32,
-        ) -> Self {
-            Self(items.each_ref().map(f))
-        }
-        #[inline(always)]
-        fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
-            items: &[U; 4],
-            f: impl FnMut(&U) -> V,
-        ) -> [V; 4] {
-            items.each_ref().map(f)
-        }
-        #[inline(always)]
-        fn lane(self, i: usize) -> f32 {
-            self.to_array().get(i).copied().unwrap_or(0.0)
-        }
-        #[inline(always)]
-        fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; 4], i: usize) -> U {
-            items.get(i).copied().unwrap_or_default()
-        }
+    #[inline(always)]
+    pub(super) fn splat(v: f32) -> F32x4 {
+        F32x4([v; 4])
+    }
+    #[inline(always)]
+    pub(super) fn gt(a: F32x4, b: F32x4) -> Mask4 {
+        a.compare(b, |a, b| a > b)
+    }
+    #[inline(always)]
+    pub(super) fn ge(a: F32x4, b: F32x4) -> Mask4 {
+        a.compare(b, |a, b| a >= b)
+    }
+    #[inline(always)]
+    pub(super) fn le(a: F32x4, b: F32x4) -> Mask4 {
+        a.compare(b, |a, b| a <= b)
+    }
+    #[inline(always)]
+    pub(super) fn select(mask: Mask4, a: F32x4, b: F32x4) -> F32x4 {
+        let [m0, m1, m2, m3] = mask.0;
+        let [a0, a1, a2, a3] = a.0;
+        let [b0, b1, b2, b3] = b.0;
+        let s = crate::math::select;
+        F32x4([s(m0, a0, b0), s(m1, a1, b1), s(m2, a2, b2), s(m3, a3, b3)])
+    }
+    #[inline(always)]
+    pub(super) fn max(a: F32x4, b: F32x4) -> F32x4 {
+        a.zip(b, crate::math::max)
+    }
+    #[inline(always)]
+    pub(super) fn sqrt_non_negative(a: F32x4) -> F32x4 {
+        F32x4(a.0.map(crate::math::sqrt_non_negative))
+    }
+    #[inline(always)]
+    pub(super) fn round_with_pow2(a: F32x4) -> (F32x4, F32x4) {
+        let r = a.0.map(crate::math::round_with_pow2);
+        (F32x4(r.map(|p| p.0)), F32x4(r.map(|p| p.1)))
     }
 }
 
