@@ -216,15 +216,15 @@ pub fn render(model: &ModelFile) -> Result<String> {
         writeln!(o, "/// f32 layer {k}.")?;
         writeln!(
             o,
-            "pub static F32_LAYER_{k}: DenseF32<{i}, {out}> = DenseF32 {{"
+            "pub static F32_LAYER_{k}: DenseF32<{i}, {out}> = DenseF32::new("
         )?;
-        writeln!(o, "    weights: [")?;
+        writeln!(o, "    [")?;
         for row in &l.weights {
             writeln!(o, "        [{}],", f_list(row.iter().copied()))?;
         }
         writeln!(o, "    ],")?;
-        writeln!(o, "    bias: [{}],", f_list(l.bias.iter().copied()))?;
-        writeln!(o, "}};")?;
+        writeln!(o, "    [{}],", f_list(l.bias.iter().copied()))?;
+        writeln!(o, ");")?;
     }
     writeln!(o)?;
     writeln!(o, "/// The f32 network on normalised features.")?;
