@@ -35,11 +35,25 @@ pub type Lut = [i16; LUT_LEN];
 pub fn quantise_input(x: f32) -> i16 {
     let v = super::fastmath::clamp(x * 32767.0, -32768.0, 32767.0);
     // 1.5·2²³ rounding constant: round half to even, exact for |v| < 2²².
-    let r = (v + 12_582_912.0) - 12_582_912.0;
-    // `r` is integral and inside the i16 range (NaN stays NaN and converts to 0), so the
-    // conversion through i32 is exact; it is one `vcvt` on the M4, where a saturating
-    // conversion straight to i16 costs a compare-and-select chain per input.
-    (r as i32) as i16
+    let shifted = v + 12_582_912.0;
+    #[cfg(target_arch = "x86_64")]
+    {
+        // The sum lies in [2²³, 2²⁴), where the f32 spacing is 1: its mantissa is
+        // 2²² + round(v), so its low 16 bits are round(v) in two's complement. Integer
+        // operations on the bit pattern vectorise with SSE2, where Rust's saturating `as i32`
+        // is a scalar convert-compare-select chain per input. NaN gives 0 as the conversion
+        // below does.
+        let code = shifted.to_bits() as u16 & u16::from(!v.is_nan()).wrapping_neg();
+        code as i16
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        // `r` is integral and inside the i16 range (NaN stays NaN and converts to 0), so the
+        // conversion through i32 is exact; it is one `vcvt` on the M4, where a saturating
+        // conversion straight to i16 costs a compare-and-select chain per input.
+        let r = shifted - 12_582_912.0;
+        (r as i32) as i16
+    }
 }
 
 /// `round(acc · multiplier · 2^−shift)` saturated to i16.
@@ -252,5 +266,54 @@ mod tests {
         assert_eq!(quantise_input(f32::NAN), 0);
         assert_eq!(quantise_input(0.25), 8192); // 8191.75 → 8192
         assert_eq!(quantise_input(-0.25), -8192);
+    }
+
+    /// The bit-pattern quantisation of x86-64 is the M4's conversion, bit for bit: against
+    /// `round_ties_even` of the clamped value (the definition, computed in f64) over every
+    /// half-code and its neighbours in [−1.1, 1.1], random bit patterns (NaN with payloads,
+    /// infinities, subnormals) and signed zeros.
+    #[test]
+    fn input_quantisation_is_the_rounded_clamp() {
+        let definition = |x: f32| -> i16 {
+            let v = f64::from(x) * 32767.0;
+            if v.is_nan() {
+                0
+            } else {
+                // x·32767 rounds to f32 first, as in the core.
+                let v = f64::from((x * 32767.0).clamp(-32768.0, 32767.0));
+                v.round_ties_even() as i16
+            }
+        };
+        let mut state = 0x9e37_79b9_u32;
+        let random = core::iter::from_fn(|| {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            Some(f32::from_bits(state))
+        });
+        let half_codes = (-72_000i32..72_000).flat_map(|k| {
+            let x = (k as f32 + 0.5) / 32767.0;
+            [
+                x,
+                f32::from_bits(x.to_bits() + 1),
+                f32::from_bits(x.to_bits() - 1),
+            ]
+        });
+        let specials = [
+            0.0f32,
+            -0.0,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            -f32::NAN,
+        ];
+        for x in half_codes.chain(random.take(200_000)).chain(specials) {
+            assert_eq!(
+                quantise_input(x),
+                definition(x),
+                "{x:e} ({:#x})",
+                x.to_bits()
+            );
+        }
     }
 }
