@@ -63,8 +63,15 @@ fn multiplier_shift(ratio: f64) -> Result<(i32, u32)> {
     }
     let mut m = (r * (1u64 << 23) as f64).round() as i64;
     if m == 1 << 23 {
-        m /= 2;
-        k -= 1;
+        if k == 0 {
+            // A ratio within 2⁻²⁴ of 1: m = 2²² at shift 22 would leave the shift range the
+            // core's exact host path accepts (≥ 23), so keep shift 23 and the largest
+            // multiplier, one unit of 2⁻²³ off (the rounding above errs by up to half that).
+            m = (1 << 23) - 1;
+        } else {
+            m /= 2;
+            k -= 1;
+        }
     }
     let shift = 23 + k;
     if shift > 62 {
@@ -220,9 +227,11 @@ mod tests {
     /// multiplier·2^−shift reproduces the ratio to Q23 precision (2⁻²³ relative).
     #[test]
     fn multiplier_shift_reproduces_ratio() {
-        for ratio in [0.9999999, 0.5, 0.3, 1e-3, 3.7e-9] {
+        for ratio in [0.999_999_99, 0.9999999, 0.5, 0.3, 1e-3, 3.7e-9] {
             let (m, s) = multiplier_shift(ratio).unwrap();
             assert!((1 << 22..1 << 23).contains(&m));
+            // The core's exact host path needs 23 ≤ shift ≤ 62 (`exact_f64::ExactF64::new`).
+            assert!((23..=62).contains(&s), "{ratio}: shift {s}");
             let back = f64::from(m) / 2f64.powi(s as i32);
             assert!(
                 (back / ratio - 1.0).abs() < 2.0 / (1u64 << 23) as f64,
