@@ -53,11 +53,17 @@ pub struct ReplayArgs {
     /// SCHED_FIFO priority under --realtime (1–99).
     #[arg(long, requires = "realtime", default_value_t = 80)]
     pub rt_priority: i32,
+    /// Spin this long (s, 0–60) after the timed loop, on its CPU and policy, counting the
+    /// machine's pauses: the report then says how many steps over the budget the machine alone
+    /// explains (0: no probe).
+    #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
+    pub pause_probe_s: f64,
 }
 
 /// Runs the replay; exit status 2 when the budget or the accuracy limits are missed.
 pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
     let budget_us = check_range("--budget-us", args.budget_us, 1e-3, 1e6)?;
+    let pause_probe_s = check_range("--pause-probe-s", args.pause_probe_s, 0.0, 60.0)?;
     let path = args.trace.clone().unwrap_or_else(wiring::default_trace);
     if args.trace.is_none() && !path.exists() {
         anyhow::bail!(
@@ -98,6 +104,7 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
                 priority: args.rt_priority,
             }
         }),
+        pause_probe_s,
     };
     let points = if args.reference_every == 0 || product.reference.is_none() {
         0

@@ -11,6 +11,7 @@
 //! may integrate state such as the cage angle, so it cannot skip samples). Nothing of this runs
 //! inside the timed loop, so the reference cannot pollute the caches the timings see.
 
+use super::pauses::PauseProbe;
 use super::stats::Limits;
 use super::{AccuracyReference, BearingStepper, FilmSource, StepFault, StepOutputs};
 use crate::realtime::{Guard, Realtime};
@@ -35,6 +36,9 @@ pub struct ReplayConfig {
     pub min_reference_force_n: f64,
     /// Run the timed loop under real-time scheduling (`crate::realtime`).
     pub realtime: Option<Realtime>,
+    /// Spin this long (s) after the timed loop, under its scheduling, measuring the machine's
+    /// pauses (`super::pauses`); 0 skips the probe.
+    pub pause_probe_s: f64,
 }
 
 /// The models a replay drives.
@@ -134,6 +138,8 @@ pub struct ReplayRun {
     pub sources: SourceCounts,
     /// The real-time scheduling the timed loop ran under, if any.
     pub realtime: Option<Realtime>,
+    /// The machine's pauses, measured right after the timed loop (`super::pauses`).
+    pub pauses: Option<PauseProbe>,
 }
 
 /// A replay that could not finish.
@@ -233,6 +239,9 @@ pub fn replay(
     if let Some(p) = pacing.as_mut() {
         p.wall_s = start.elapsed().as_secs_f64();
     }
+    // Still on the timed loop's CPU and policy: the pauses the steps saw.
+    let pauses = (config.pause_probe_s > 0.0)
+        .then(|| PauseProbe::run(Duration::from_secs_f64(config.pause_probe_s.min(60.0))));
     drop(realtime);
 
     let mut sources = SourceCounts::default();
@@ -254,6 +263,7 @@ pub fn replay(
         dry_force_errors: Vec::new(),
         sources,
         realtime: config.realtime,
+        pauses,
     };
     accuracy_pass(trace, parts, config, progress, &mut run)?;
     Ok(run)

@@ -8,12 +8,14 @@
 //! against the reference shows what the film buys (PHYSICS.md §4). `crate::wiring` builds the
 //! product's stepper and reference; tests use closed-form doubles.
 //!
-//! [`engine`] runs the timed loop (free-running or paced at wall-clock rate) and then, outside
-//! the timed loop so that it cannot disturb the timings, the accuracy pass. [`stats`] turns the
+//! [`engine`] runs the timed loop (free-running or paced at wall-clock rate), then [`pauses`]
+//! measures how often the machine pauses that CPU, and then, outside the timed loop so that it
+//! cannot disturb the timings, the accuracy pass. [`stats`] turns the
 //! timings and errors into the distribution and the verdicts; [`report`] and [`plots`] write
 //! them out.
 
 pub mod engine;
+pub mod pauses;
 pub mod plots;
 pub mod report;
 pub mod stats;

@@ -3,11 +3,12 @@
 //! JSON keys (issue 6 §4): `steps`, `step_time_ns{min,median,p99,p999,max}`, `budget_ok`,
 //! `accuracy_ok`, `film_rel_err_p99`, `force_rel_err_p99`, `dry_force_rel_err_p99`,
 //! `network_fraction`, plus `steps_over_budget` and context (trace, film model, limits, pacing,
-//! the real-time scheduling of the timed loop, reasons). Accuracy keys
+//! the real-time scheduling of the timed loop, the machine's pauses (`environment`), reasons). Accuracy keys
 //! are `null` when no reference ran (`--reference-every 0` or no reference available):
 //! nothing was checked, which is not the same as a pass.
 
 use super::engine::{Pacing, ReplayConfig, ReplayRun, SourceCounts};
+use super::pauses::PauseSummary;
 use super::stats::{accuracy_verdict, budget_verdict, percentile, Limits, StepTimeStats};
 use super::FilmChoice;
 use crate::realtime::Realtime;
@@ -62,6 +63,10 @@ pub struct ReplayReport {
     /// The real-time scheduling of the timed loop (`--realtime`): CPU and SCHED_FIFO priority;
     /// `null` under the ordinary policy.
     pub realtime: Option<Realtime>,
+    /// The machine's pauses on the timed loop's CPU and what they alone cost the budget
+    /// (`super::pauses`); `null` when the probe did not run. Context for the budget verdict,
+    /// which it does not change.
+    pub environment: Option<PauseSummary>,
     /// Why the replay failed (empty when it passed).
     pub reasons: Vec<String>,
 }
@@ -80,9 +85,27 @@ impl ReplayReport {
         let film_p99 = percentile(&run.film_errors, 0.99);
         let force_p99 = percentile(&run.force_errors, 0.99);
         let mut reasons = Vec::new();
+        let budget_ns = (config.limits.budget_us * 1e3) as u64;
+        let environment = run
+            .pauses
+            .as_ref()
+            .and_then(|p| p.summary(budget_ns, run.step_times_ns.len(), step_time_ns.median));
         let budget_ok = match budget_verdict(&step_time_ns, &config.limits) {
             Ok(()) => true,
-            Err(reason) => {
+            Err(mut reason) => {
+                if let Some(e) = &environment {
+                    let _ = write!(
+                        reason,
+                        " (the machine paused this CPU for ≥ {:.1} µs {:.0} times/s while idle-spinning, which alone puts ≈ {:.0} steps over the budget; {} were)",
+                        e.threshold_ns as f64 / 1e3,
+                        e.pauses_per_s,
+                        e.expected_steps_over_budget,
+                        run.step_times_ns
+                            .iter()
+                            .filter(|&&t| t as f64 > config.limits.budget_us * 1e3)
+                            .count()
+                    );
+                }
                 reasons.push(reason);
                 false
             }
@@ -123,6 +146,7 @@ impl ReplayReport {
             film_contacts_compared: run.film_errors.len(),
             pacing: run.pacing,
             realtime: run.realtime,
+            environment,
             reasons,
         })
     }
@@ -190,6 +214,20 @@ impl ReplayReport {
                     "Timed loop under the ordinary scheduling policy (`--realtime` pins it to a CPU under SCHED_FIFO).\n"
                 );
             }
+        }
+        if let Some(e) = &self.environment {
+            let _ = writeln!(
+                md,
+                "Machine pauses (a {:.2} s probe spinning on the clock right after the timed loop, same CPU and policy): {} pauses of ≥ {:.1} µs (budget − median step), {:.0} per second, longest {:.1} µs. At the median step they alone put ≈ {:.1} of the {} steps over the budget; {} were.\n",
+                e.probe_s,
+                e.pauses,
+                e.threshold_ns as f64 / 1e3,
+                e.pauses_per_s,
+                e.longest_pause_ns as f64 / 1e3,
+                e.expected_steps_over_budget,
+                self.steps,
+                self.steps_over_budget
+            );
         }
         if let Some(p) = &self.pacing {
             let _ = writeln!(

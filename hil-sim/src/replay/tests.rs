@@ -168,6 +168,7 @@ fn config(reference_every: usize, paced: bool, rate: f64) -> ReplayConfig {
         limits: Limits::default(),
         min_reference_force_n: 1.0,
         realtime: None,
+        pause_probe_s: 0.0,
     }
 }
 
@@ -450,4 +451,51 @@ fn realtime_scheduling_covers_the_timed_loop_only() {
     };
     let e = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap_err();
     assert!(e.fault.reason.contains("does not exist"), "{e}");
+}
+
+/// The pause probe runs when asked, lands in the report (JSON `environment`, a markdown line)
+/// and, when the budget is missed, in its reason; its figures follow `pauses::PauseProbe`'s
+/// definition (threshold = budget − median step, floored at 1 µs). Without it the report has
+/// no `environment`.
+#[test]
+fn pause_probe_reaches_the_report() {
+    let trace = trace(200, 10_000.0);
+    let mut stepper = ClosedFormStepper::new(true);
+    // A budget of 1 ns: every step is over it, so the budget verdict fails.
+    let cfg = ReplayConfig {
+        pause_probe_s: 0.02,
+        limits: Limits {
+            budget_us: 1e-3,
+            ..Limits::default()
+        },
+        ..config(0, false, 10_000.0)
+    };
+    let run = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap();
+    let probe = run.pauses.clone().unwrap();
+    assert!(probe.duration_ns >= 20_000_000);
+    let report =
+        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+    let env = report.environment.unwrap();
+    assert_eq!(env.threshold_ns, super::pauses::MIN_PAUSE_NS);
+    assert_eq!(env.pauses, probe.gaps_ns.len());
+    assert!(!report.budget_ok);
+    assert!(
+        report
+            .reasons
+            .iter()
+            .any(|r| r.contains("the machine paused")),
+        "{:?}",
+        report.reasons
+    );
+    assert!(report.markdown().contains("Machine pauses"));
+    let json = serde_json::to_value(&report).unwrap();
+    assert!(json["environment"]["pauses_per_s"].is_number());
+
+    let cfg = config(0, false, 10_000.0);
+    let run = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap();
+    assert_eq!(run.pauses, None);
+    let report =
+        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+    assert_eq!(report.environment, None);
+    assert!(!report.markdown().contains("Machine pauses"));
 }
