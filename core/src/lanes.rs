@@ -35,6 +35,8 @@ pub(crate) trait Real:
     fn ge(self, other: Self) -> Self::Mask;
     /// `self <= other` per lane.
     fn le(self, other: Self) -> Self::Mask;
+    /// `self < other` per lane.
+    fn lt(self, other: Self) -> Self::Mask;
     /// `a` where `mask`, else `b`, by bit masks (`crate::math::select`).
     fn select(mask: Self::Mask, a: Self, b: Self) -> Self;
     /// `a` where `mask`, else `b`: [`Real::select`]'s result, as a plain choice for one
@@ -42,8 +44,14 @@ pub(crate) trait Real:
     fn choose(mask: Self::Mask, a: Self, b: Self) -> Self;
     /// `crate::math::max` per lane: `self` if `self > other`, else `other`.
     fn max(self, other: Self) -> Self;
+    /// `crate::math::min` per lane: `self` if `self < other`, else `other`.
+    fn min(self, other: Self) -> Self;
     /// IEEE square root of non-negative lanes.
     fn sqrt_non_negative(self) -> Self;
+    /// `crate::math::split_normal` per lane: the mantissa re-centred to [√½, √2) and the
+    /// matching exponent, as a float, of positive normal lanes (integer arithmetic on the bit
+    /// pattern).
+    fn split_normal(self) -> (Self, Self);
     /// `crate::math::round_with_pow2` per lane.
     fn round_with_pow2(self) -> (Self, Self);
     /// `f` of each lane.
@@ -65,6 +73,8 @@ pub(crate) trait Real:
     fn lane(self, i: usize) -> f32;
     /// Item `i` of per-lane items (the default beyond the lanes).
     fn item<U: Copy + Default + core::fmt::Debug>(items: &Self::PerLane<U>, i: usize) -> U;
+    /// Per-lane items `f(i)` of lanes `i` = 0, 1, ….
+    fn build<U: Copy + Default + core::fmt::Debug>(f: impl FnMut(usize) -> U) -> Self::PerLane<U>;
 }
 
 impl Real for f32 {
@@ -87,6 +97,10 @@ impl Real for f32 {
         self <= other
     }
     #[inline(always)]
+    fn lt(self, other: Self) -> bool {
+        self < other
+    }
+    #[inline(always)]
     fn select(mask: bool, a: Self, b: Self) -> Self {
         crate::math::select(mask, a, b)
     }
@@ -103,8 +117,16 @@ impl Real for f32 {
         crate::math::max(self, other)
     }
     #[inline(always)]
+    fn min(self, other: Self) -> Self {
+        crate::math::min(self, other)
+    }
+    #[inline(always)]
     fn sqrt_non_negative(self) -> Self {
         crate::math::sqrt_non_negative(self)
+    }
+    #[inline(always)]
+    fn split_normal(self) -> (Self, Self) {
+        crate::math::split_normal(self)
     }
     #[inline(always)]
     fn round_with_pow2(self) -> (Self, Self) {
@@ -144,6 +166,10 @@ impl Real for f32 {
             U::default()
         }
     }
+    #[inline(always)]
+    fn build<U: Copy + Default + core::fmt::Debug>(mut f: impl FnMut(usize) -> U) -> U {
+        f(0)
+    }
 }
 
 pub(crate) use simd::{F32x4, Mask4};
@@ -170,6 +196,10 @@ impl Real for F32x4 {
         simd::le(self, other)
     }
     #[inline(always)]
+    fn lt(self, other: Self) -> Mask4 {
+        simd::lt(self, other)
+    }
+    #[inline(always)]
     fn select(mask: Mask4, a: Self, b: Self) -> Self {
         simd::select(mask, a, b)
     }
@@ -182,8 +212,16 @@ impl Real for F32x4 {
         simd::max(self, other)
     }
     #[inline(always)]
+    fn min(self, other: Self) -> Self {
+        simd::min(self, other)
+    }
+    #[inline(always)]
     fn sqrt_non_negative(self) -> Self {
         simd::sqrt_non_negative(self)
+    }
+    #[inline(always)]
+    fn split_normal(self) -> (Self, Self) {
+        simd::split_normal(self)
     }
     #[inline(always)]
     fn round_with_pow2(self) -> (Self, Self) {
@@ -215,6 +253,10 @@ impl Real for F32x4 {
     fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; 4], i: usize) -> U {
         items.get(i).copied().unwrap_or_default()
     }
+    #[inline(always)]
+    fn build<U: Copy + Default + core::fmt::Debug>(f: impl FnMut(usize) -> U) -> [U; 4] {
+        core::array::from_fn(f)
+    }
 }
 
 /// SSE (baseline on every x86-64): one instruction per operation and lane group.
@@ -226,9 +268,10 @@ impl Real for F32x4 {
 mod simd {
     use core::arch::x86_64::{
         __m128, _mm_add_epi32, _mm_add_ps, _mm_and_ps, _mm_and_si128, _mm_andnot_ps,
-        _mm_castps_si128, _mm_castsi128_ps, _mm_cmpge_ps, _mm_cmpgt_ps, _mm_cmple_ps, _mm_div_ps,
-        _mm_max_ps, _mm_mul_ps, _mm_or_ps, _mm_set1_epi32, _mm_set1_ps, _mm_set_ps, _mm_slli_epi32,
-        _mm_sqrt_ps, _mm_sub_epi32, _mm_sub_ps, _mm_xor_ps,
+        _mm_castps_si128, _mm_castsi128_ps, _mm_cmpge_ps, _mm_cmpgt_ps, _mm_cmple_ps, _mm_cmplt_ps,
+        _mm_cvtepi32_ps, _mm_div_ps, _mm_max_ps, _mm_min_ps, _mm_mul_ps, _mm_or_ps, _mm_or_si128,
+        _mm_set1_epi32, _mm_set1_ps, _mm_set_ps, _mm_slli_epi32, _mm_sqrt_ps, _mm_srli_epi32,
+        _mm_sub_epi32, _mm_sub_ps, _mm_xor_ps,
     };
     use core::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
 
@@ -309,6 +352,10 @@ mod simd {
         Mask4(unsafe { _mm_cmple_ps(a.0, b.0) })
     }
     #[inline(always)]
+    pub(super) fn lt(a: F32x4, b: F32x4) -> Mask4 {
+        Mask4(unsafe { _mm_cmplt_ps(a.0, b.0) })
+    }
+    #[inline(always)]
     pub(super) fn select(mask: Mask4, a: F32x4, b: F32x4) -> F32x4 {
         F32x4(unsafe { _mm_or_ps(_mm_and_ps(mask.0, a.0), _mm_andnot_ps(mask.0, b.0)) })
     }
@@ -319,8 +366,39 @@ mod simd {
         F32x4(unsafe { _mm_max_ps(a.0, b.0) })
     }
     #[inline(always)]
+    pub(super) fn min(a: F32x4, b: F32x4) -> F32x4 {
+        // MINPS returns its second operand unless the first is smaller (also for NaN and
+        // equal zeros): `math::min` exactly.
+        F32x4(unsafe { _mm_min_ps(a.0, b.0) })
+    }
+    #[inline(always)]
     pub(super) fn sqrt_non_negative(a: F32x4) -> F32x4 {
         F32x4(unsafe { _mm_sqrt_ps(a.0) })
+    }
+    #[inline(always)]
+    pub(super) fn split_normal(a: F32x4) -> (F32x4, F32x4) {
+        // `math::split_normal` lane by lane: the same bit fields, the same compare; the
+        // exponent's integer sum is exact (|e| ≤ 128), so converting it once gives its bits.
+        unsafe {
+            let bits = _mm_castps_si128(a.0);
+            let exponent = _mm_sub_epi32(
+                _mm_and_si128(_mm_srli_epi32::<23>(bits), _mm_set1_epi32(0xff)),
+                _mm_set1_epi32(127),
+            );
+            let mantissa = _mm_castsi128_ps(_mm_or_si128(
+                _mm_and_si128(bits, _mm_set1_epi32(0x007f_ffff)),
+                _mm_set1_epi32(0x3f80_0000),
+            ));
+            let high = _mm_cmpgt_ps(mantissa, _mm_set1_ps(core::f32::consts::SQRT_2));
+            let m = select(
+                Mask4(high),
+                F32x4(_mm_mul_ps(mantissa, _mm_set1_ps(0.5))),
+                F32x4(mantissa),
+            );
+            // The mask is −1 where `high`: subtracting it adds one.
+            let e = _mm_cvtepi32_ps(_mm_sub_epi32(exponent, _mm_castps_si128(high)));
+            (m, F32x4(e))
+        }
     }
     #[inline(always)]
     pub(super) fn round_with_pow2(a: F32x4) -> (F32x4, F32x4) {
@@ -441,6 +519,10 @@ mod simd {
         a.compare(b, |a, b| a <= b)
     }
     #[inline(always)]
+    pub(super) fn lt(a: F32x4, b: F32x4) -> Mask4 {
+        a.compare(b, |a, b| a < b)
+    }
+    #[inline(always)]
     pub(super) fn select(mask: Mask4, a: F32x4, b: F32x4) -> F32x4 {
         let [m0, m1, m2, m3] = mask.0;
         let [a0, a1, a2, a3] = a.0;
@@ -453,8 +535,17 @@ mod simd {
         a.zip(b, crate::math::max)
     }
     #[inline(always)]
+    pub(super) fn min(a: F32x4, b: F32x4) -> F32x4 {
+        a.zip(b, crate::math::min)
+    }
+    #[inline(always)]
     pub(super) fn sqrt_non_negative(a: F32x4) -> F32x4 {
         F32x4(a.0.map(crate::math::sqrt_non_negative))
+    }
+    #[inline(always)]
+    pub(super) fn split_normal(a: F32x4) -> (F32x4, F32x4) {
+        let r = a.0.map(crate::math::split_normal);
+        (F32x4(r.map(|p| p.0)), F32x4(r.map(|p| p.1)))
     }
     #[inline(always)]
     pub(super) fn round_with_pow2(a: F32x4) -> (F32x4, F32x4) {
@@ -489,6 +580,13 @@ mod tests {
             -125.2,
             12.5,
             2.0e22,
+            // About the re-centring of `split_normal`: √2 and its neighbours, the ends of the
+            // normal range.
+            core::f32::consts::SQRT_2,
+            f32::from_bits(core::f32::consts::SQRT_2.to_bits() + 1),
+            -2.828_427_3,
+            f32::MIN_POSITIVE,
+            f32::MAX,
         ];
         let mut values = [0.0f32; 64];
         let mut state = 0x2545_f491_u32;
@@ -515,6 +613,8 @@ mod tests {
                     va.max(vb).to_array(),
                     F32x4::select(va.gt(vb) & vb.le(va), va, vb).to_array(),
                     F32x4::select(va.ge(vb), va, vb).to_array(),
+                    va.min(vb).to_array(),
+                    F32x4::select(va.lt(vb), va, vb).to_array(),
                 ];
                 for i in 0..4 {
                     let (x, y) = (a[i], b[i]);
@@ -527,6 +627,8 @@ mod tests {
                         crate::math::max(x, y),
                         crate::math::select((x > y) & (y <= x), x, y),
                         crate::math::select(x >= y, x, y),
+                        crate::math::min(x, y),
+                        crate::math::select(x < y, x, y),
                     ];
                     for (l, o) in lanes.iter().zip(one) {
                         assert_eq!(bits(l[i]), bits(o), "{x} {y}");
@@ -543,6 +645,22 @@ mod tests {
                     );
                     let (n1, p1) = crate::math::round_with_pow2(a[i].clamp(-126.0, 127.0));
                     assert_eq!((bits(n.lane(i)), bits(p.lane(i))), (bits(n1), bits(p1)));
+                }
+                // The bit-field split and the logarithm built on it, of positive normal lanes
+                // (the values folded into the normal range; NaN taken as 1).
+                let normal = a.map(|v| {
+                    if v.is_nan() {
+                        1.0
+                    } else {
+                        v.abs().clamp(f32::MIN_POSITIVE, f32::MAX)
+                    }
+                });
+                let (m, e) = F32x4::from_array(normal).split_normal();
+                let log = crate::math::ln_normal(F32x4::from_array(normal));
+                for (i, &x) in normal.iter().enumerate() {
+                    let (m1, e1) = crate::math::split_normal(x);
+                    assert_eq!((bits(m.lane(i)), bits(e.lane(i))), (bits(m1), bits(e1)));
+                    assert_eq!(bits(log.lane(i)), bits(crate::math::ln_normal(x)), "{x}");
                 }
             }
         }

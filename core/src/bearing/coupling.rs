@@ -23,11 +23,11 @@
 //! |Δh|/h ≤ 10⁻³ (tested against a converged f64 iteration over the PHYSICS.md §5.3 domain);
 //! larger jumps cost accuracy at the lightest loads for one step (see the test).
 
-use super::film_table::{FilmSum, FilmSums, StepFilms};
+use super::film_table::{FilmSums, StepFilms};
 use crate::contact::{RollerLoad, SlicedRoller};
 use crate::film::{ContactInput, Regime, RegimeAxis};
 use crate::lanes::Real;
-use crate::math::{exp2_in_range, exp_in_range, ln_normal, max, min, select};
+use crate::math::{exp2_in_range, exp_in_range, ln_normal, max};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step. Two suffice
 /// with the step of `Newton::iterate`: the warm start's accuracy test passes, and the shaft
@@ -57,7 +57,7 @@ pub(crate) struct ContactContext {
 }
 
 /// Result of the coupled solve for one roller.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct CoupledRoller {
     pub load: RollerLoad,
     /// Elastic approach at the roller middle (m).
@@ -105,17 +105,18 @@ impl RollerMemory {
 /// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach, kept
 /// as the approach it passes through: Q = Q_ref·((δ − δ_off)/s)^n, so that the elastic
 /// approach at λ = ln Q is s·e^((λ − λ_ref)/n) — one exponential, and no logarithm beyond the
-/// fit's ln Q_ref.
+/// fit's ln Q_ref. Of one roller, or of the rollers in the lanes of `T` (the host fits four
+/// at once).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct PowerLaw {
+pub(crate) struct PowerLaw<T: Real = f32> {
     /// δ_off (m).
-    offset_m: f32,
+    offset_m: T,
     /// λ_ref = ln Q_ref of the point the law passes through.
-    ln_load_ref: f32,
+    ln_load_ref: T,
     /// s = δ_ref − δ_off at that point (m).
-    span_m: f32,
+    span_m: T,
     /// n.
-    exponent: f32,
+    exponent: T,
 }
 
 impl PowerLaw {
@@ -132,14 +133,39 @@ impl PowerLaw {
             exponent: 10.0 / 9.0,
         }
     }
+}
+
+impl<T: Real> PowerLaw<T> {
+    /// The laws of single rollers side by side.
+    #[inline(always)]
+    fn from_lanes(laws: &T::PerLane<PowerLaw>) -> Self {
+        Self {
+            offset_m: T::from_per_lane(laws, |l| l.offset_m),
+            ln_load_ref: T::from_per_lane(laws, |l| l.ln_load_ref),
+            span_m: T::from_per_lane(laws, |l| l.span_m),
+            exponent: T::from_per_lane(laws, |l| l.exponent),
+        }
+    }
+
+    /// The law of lane `i`.
+    #[inline(always)]
+    fn lane(&self, i: usize) -> PowerLaw {
+        PowerLaw {
+            offset_m: self.offset_m.lane(i),
+            ln_load_ref: self.ln_load_ref.lane(i),
+            span_m: self.span_m.lane(i),
+            exponent: self.exponent.lane(i),
+        }
+    }
 
     /// `self` if `condition`, else `other`, field by field without a branch.
-    fn select(&self, condition: bool, other: &Self) -> Self {
+    #[inline(always)]
+    fn select(&self, condition: T::Mask, other: &Self) -> Self {
         Self {
-            offset_m: select(condition, self.offset_m, other.offset_m),
-            ln_load_ref: select(condition, self.ln_load_ref, other.ln_load_ref),
-            span_m: select(condition, self.span_m, other.span_m),
-            exponent: select(condition, self.exponent, other.exponent),
+            offset_m: T::select(condition, self.offset_m, other.offset_m),
+            ln_load_ref: T::select(condition, self.ln_load_ref, other.ln_load_ref),
+            span_m: T::select(condition, self.span_m, other.span_m),
+            exponent: T::select(condition, self.exponent, other.exponent),
         }
     }
 
@@ -147,41 +173,49 @@ impl PowerLaw {
     /// K'/K = (n − 1)/s give s = 1/(K/Q − K'/K), n = s·K/Q. Straight rollers under the
     /// Palmgren law give n = 10/9 exactly; crowned or tilted ones, whose loaded length grows
     /// with the approach, a larger n. An unloaded roller takes `untouched`.
+    /// Of one roller, or of the rollers in the lanes of `T`, with the loads `loads`.
     #[inline(always)]
-    fn fit(load: &RollerLoad, approach_m: f32, untouched: &Self) -> Self {
+    fn fit(loads: &T::PerLane<RollerLoad>, approach_m: T, untouched: &Self) -> Self {
         // Both branches are computed and selected (see `math::select`): fixed work.
-        let q = load.load_n;
-        let k = load.stiffness_n_per_m;
-        let fit = (q > FIT_MIN_N) & (k > 0.0);
+        let q = T::from_per_lane(loads, |l| l.load_n);
+        let k = T::from_per_lane(loads, |l| l.stiffness_n_per_m);
+        let k2 = T::from_per_lane(loads, |l| l.stiffness_derivative_n_per_m2);
+        let c = T::splat;
+        let fit = q.gt(c(FIT_MIN_N)) & k.gt(c(0.0));
         // Finite whatever the slices gave; where `fit` fails the fallback replaces the result.
-        let rho1 = k / max(q, FIT_MIN_N);
-        let rho2 = load.stiffness_derivative_n_per_m2 / max(k, 1.0e-30);
-        let curvature_fit = rho1 - rho2 > 0.0;
-        let span_m = select(
+        let rho1 = k / q.max(c(FIT_MIN_N));
+        let rho2 = k2 / k.max(c(1.0e-30));
+        let curvature_fit = (rho1 - rho2).gt(c(0.0));
+        let span_m = T::select(
             curvature_fit,
-            1.0 / max(rho1 - rho2, 1.0e-30),
-            (10.0 / 9.0) / rho1,
+            c(1.0) / (rho1 - rho2).max(c(1.0e-30)),
+            c(10.0 / 9.0) / rho1,
         );
         let fitted = Self {
             offset_m: approach_m - span_m,
-            ln_load_ref: ln_normal(max(q, FIT_MIN_N)),
+            ln_load_ref: ln_normal(q.max(c(FIT_MIN_N))),
             span_m,
-            exponent: select(curvature_fit, min(max(span_m * rho1, 1.0), 4.0), 10.0 / 9.0),
+            exponent: T::select(
+                curvature_fit,
+                (span_m * rho1).max(c(1.0)).min(c(4.0)),
+                c(10.0 / 9.0),
+            ),
         };
         fitted.select(fit, untouched)
     }
 }
 
-/// Result of a scalar solve: λ = ln Q and the film sum there.
+/// Result of a scalar solve (of one roller, or of the rollers in the lanes of `T`): λ = ln Q
+/// and the film sum there.
 #[derive(Clone, Copy, Debug)]
-struct Solved {
-    ln_load: f32,
+struct Solved<T: Real> {
+    ln_load: T,
     /// H at λ (m), extrapolated linearly from the last evaluation.
-    film_m: f32,
+    film_m: T,
     /// The last evaluation of the film sum.
-    last: FilmSum,
+    last: FilmSums<T>,
     /// dδ/dλ of the elastic approach at the last evaluation (m).
-    elastic_slope_m: f32,
+    elastic_slope_m: T,
 }
 
 /// Solves δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by safeguarded Newton steps
@@ -221,52 +255,58 @@ impl Default for Newton {
     }
 }
 
-impl Newton {
+impl<T: Real> Newton<T> {
+    /// The equation on `law` at geometric approach δ_geo (m), from λ = `start` (or the
+    /// bracket's lower part if that is outside it).
     #[inline(always)]
-    fn new(law: &PowerLaw, geometric_approach_m: f32, start: f32) -> Self {
-        let (lo, hi) = (LN_LOAD_MIN, LN_LOAD_MAX);
+    fn new(law: &PowerLaw<T>, geometric_approach_m: T, start: T) -> Self {
+        let (lo, hi) = (T::splat(LN_LOAD_MIN), T::splat(LN_LOAD_MAX));
         Self::from_one(
             geometric_approach_m - law.offset_m,
             law.exponent,
             law.span_m,
             law.ln_load_ref,
-            select((start > lo) & (start < hi), start, lo + 0.5),
+            T::select(
+                start.gt(lo) & start.lt(hi),
+                start,
+                T::splat(LN_LOAD_MIN + 0.5),
+            ),
         )
     }
 
     /// A roller's state before its first step: the gap δ_geo − δ_off (m), the law's exponent
     /// n, span (m) and λ_ref, and the start λ.
     #[inline(always)]
-    fn from_one(gap: f32, exponent: f32, span_m: f32, ln_load_ref: f32, lam: f32) -> Self {
+    fn from_one(gap: T, exponent: T, span_m: T, ln_load_ref: T, lam: T) -> Self {
         Self {
             gap,
-            inverse_exponent: 1.0 / exponent,
-            inverse_exponent_log2: core::f32::consts::LOG2_E / exponent,
+            inverse_exponent: T::splat(1.0) / exponent,
+            inverse_exponent_log2: T::splat(core::f32::consts::LOG2_E) / exponent,
             span_m,
             ln_load_ref,
-            lo: LN_LOAD_MIN,
-            hi: LN_LOAD_MAX,
+            lo: T::splat(LN_LOAD_MIN),
+            hi: T::splat(LN_LOAD_MAX),
             lam,
-            last: (lam, FilmSum::default(), 0.0),
+            last: (lam, FilmSums::zero(), T::splat(0.0)),
         }
     }
 
     /// The root found so far.
-    fn solved(&self) -> Solved {
+    #[inline(always)]
+    fn solved(&self) -> Solved<T> {
         let (at, last, elastic_slope_m) = self.last;
         Solved {
             ln_load: self.lam,
-            film_m: max(last.total_m + last.slope_m * (self.lam - at), 0.0),
+            film_m: (last.total_m + last.slope_m * (self.lam - at)).max(T::splat(0.0)),
             last,
             elastic_slope_m,
         }
     }
-}
 
-impl<T: Real> Newton<T> {
     /// The states of single rollers fresh from `Newton::new`, side by side: their last
     /// evaluation is the start λ with an empty film sum, as `new` leaves it (so it is made
     /// here, not gathered).
+    #[cfg(test)]
     #[inline(always)]
     pub(crate) fn start_lanes(rollers: &T::PerLane<Newton>) -> Self {
         let field = |f: fn(&Newton) -> f32| T::from_per_lane(rollers, f);
@@ -280,16 +320,13 @@ impl<T: Real> Newton<T> {
             lo: field(|n| n.lo),
             hi: field(|n| n.hi),
             lam,
-            last: (
-                lam,
-                FilmSums::from_lanes(&T::map_items(rollers, |_| FilmSum::default())),
-                T::splat(0.0),
-            ),
+            last: (lam, FilmSums::zero(), T::splat(0.0)),
         }
     }
 
     /// Store what the iterations of lane `i` changed (bracket, λ, last evaluation) into the
     /// state of its roller; the law's constants there are the lane's already.
+    #[cfg(test)]
     #[inline(always)]
     pub(crate) fn store_lane(&self, i: usize, roller: &mut Newton) {
         roller.lo = self.lo.lane(i);
@@ -341,16 +378,16 @@ impl<T: Real> Newton<T> {
     }
 }
 
-/// What a roller's step has before its Newton iterations: the slices at the predicted
-/// approach and the power law fitted there.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Prepared {
-    geometric_approach_m: f32,
-    approach1: f32,
-    r1: RollerLoad,
-    law: PowerLaw,
+/// What a roller's step has before its Newton iterations (of one roller, or of the rollers
+/// in the lanes of `T`): the slices at the predicted approach and the power law fitted there.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Prepared<T: Real = f32> {
+    geometric_approach_m: T,
+    approach1: T,
+    r1: T::PerLane<RollerLoad>,
+    law: PowerLaw<T>,
     /// The film–load equation on `law`, to be iterated [`NEWTON_ITERATIONS`] times.
-    pub newton: Newton,
+    pub newton: Newton<T>,
 }
 
 /// The approach at which a roller's one slice pass runs: the geometric approach `δ_geo` (m)
@@ -379,7 +416,7 @@ pub(crate) fn prepare_roller<const S: usize>(
     memory: &RollerMemory,
 ) -> Prepared {
     let approach1 = predicted_approach(geometric_approach_m, memory);
-    prepare_sliced(
+    prepare_sliced::<f32>(
         roller.evaluate(approach1, tilt_rad),
         approach1,
         geometric_approach_m,
@@ -387,31 +424,64 @@ pub(crate) fn prepare_roller<const S: usize>(
     )
 }
 
-/// [`prepare_roller`] after its slice pass: the slices' load `r1` at `approach1` (m).
+/// [`prepare_roller`] after its slice pass: the slices' load `r1` at `approach1` (m), of one
+/// roller or of the rollers in the lanes of `T` (the host prepares four at once).
 #[inline(always)]
-pub(crate) fn prepare_sliced(
-    r1: RollerLoad,
-    approach1: f32,
-    geometric_approach_m: f32,
-    memory: &RollerMemory,
-) -> Prepared {
+pub(crate) fn prepare_sliced<T: Real>(
+    r1: T::PerLane<RollerLoad>,
+    approach1: T,
+    geometric_approach_m: T,
+    memory: &T::PerLane<RollerMemory>,
+) -> Prepared<T> {
     // A whole-roller power law through the slices there (matching load, stiffness and
     // curvature: its error is third order in the approach's step from `approach1`), and the
     // film–load equation on it. Load and moment follow the law.
     // Where the slices carry nothing at `approach1` (a light roller whose film was
     // over-predicted), the last step's law stands in (before the first step, the cold
     // memory's).
-    let law1 = PowerLaw::fit(&r1, approach1, &memory.law);
+    let last_law = PowerLaw::from_lanes(&T::map_items(memory, |m| m.law));
+    let law1 = PowerLaw::fit(&r1, approach1, &last_law);
     // From the slices' load where they carry one, else from the last step's; before the first
     // step a little above it.
-    let start =
-        select(r1.load_n > FIT_MIN_N, law1.ln_load_ref, memory.ln_load) + memory.start_offset;
+    let carried = T::from_per_lane(&r1, |l| l.load_n).gt(T::splat(FIT_MIN_N));
+    let start = T::select(
+        carried,
+        law1.ln_load_ref,
+        T::from_per_lane(memory, |m| m.ln_load),
+    ) + T::from_per_lane(memory, |m| m.start_offset);
     Prepared {
         geometric_approach_m,
         approach1,
         r1,
         law: law1,
         newton: Newton::new(&law1, geometric_approach_m, start),
+    }
+}
+
+/// A roller's solve after its Newton iterations, of one roller or of the rollers in the lanes
+/// of `T`: [`CoupledRoller`] but the regimes.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Finished<T: Real> {
+    load: T::PerLane<RollerLoad>,
+    approach_m: T,
+    ln_load: T,
+    films: [(T, T); 2],
+    film_slope_m_per_n: T,
+}
+
+impl<T: Real> Finished<T> {
+    /// The result of the roller in lane `i`, with its contacts' regimes on `regime_axes`.
+    #[inline(always)]
+    pub(crate) fn roller(&self, i: usize, regime_axes: &[RegimeAxis; 2]) -> CoupledRoller {
+        let ln_load = self.ln_load.lane(i);
+        CoupledRoller {
+            load: T::item(&self.load, i),
+            approach_m: self.approach_m.lane(i),
+            ln_load,
+            films: self.films.map(|(c, m)| (c.lane(i), m.lane(i))),
+            film_slope_m_per_n: self.film_slope_m_per_n.lane(i),
+            regimes: regime_axes.map(|axis| axis.at(ln_load)),
+        }
     }
 }
 
@@ -424,6 +494,17 @@ pub(crate) fn finish_roller(
     regime_axes: &[RegimeAxis; 2],
     memory: &mut RollerMemory,
 ) -> CoupledRoller {
+    finish_lanes::<f32>(prepared, films, memory).roller(0, regime_axes)
+}
+
+/// [`finish_roller`] but the regimes, of one roller or of the rollers in the lanes of `T`
+/// (the host finishes four at once), with their memories `memory` (updated).
+#[inline(always)]
+pub(crate) fn finish_lanes<T: Real>(
+    prepared: &Prepared<T>,
+    films: &StepFilms<'_>,
+    memory: &mut T::PerLane<RollerMemory>,
+) -> Finished<T> {
     let Prepared {
         geometric_approach_m,
         approach1,
@@ -435,31 +516,36 @@ pub(crate) fn finish_roller(
     let approach_m = geometric_approach_m + solved2.film_m;
     let ln_load = solved2.ln_load;
     let load_n = exp_in_range(ln_load);
-    let mut load = r1;
     // At the root, Q = e^λ is the law's load at `approach_m`; a roller whose approach stays
     // short of the law's offset (no film, separated) carries nothing.
-    load.load_n = select(approach_m > law1.offset_m, load_n, 0.0);
-    load.moment_nm += load.stiffness_moment_n * (approach_m - approach1);
+    let carried = T::select(approach_m.gt(law1.offset_m), load_n, T::splat(0.0));
+    let moment_nm = T::from_per_lane(&r1, |l| l.moment_nm)
+        + T::from_per_lane(&r1, |l| l.stiffness_moment_n) * (approach_m - approach1);
+    let load = T::build(|i| RollerLoad {
+        load_n: carried.lane(i),
+        moment_nm: moment_nm.lane(i),
+        ..T::item(&r1, i)
+    });
     // At the root, dE/dλ·dλ = dδ_geo + dH/dλ·dλ: dH/dδ_geo = H'/(E' − H').
     let film_slope_m = solved2.last.slope_m;
-    let film_sensitivity = film_slope_m / max(solved2.elastic_slope_m - film_slope_m, 1.0e-30);
-    *memory = RollerMemory {
-        ln_load,
-        film_m: solved2.film_m,
-        geometric_approach_m,
-        film_sensitivity: min(max(film_sensitivity, -1.0), 0.0),
-        law: law1,
+    let film_sensitivity =
+        film_slope_m / (solved2.elastic_slope_m - film_slope_m).max(T::splat(1.0e-30));
+    let film_sensitivity = film_sensitivity.max(T::splat(-1.0)).min(T::splat(0.0));
+    *memory = T::build(|i| RollerMemory {
+        ln_load: ln_load.lane(i),
+        film_m: solved2.film_m.lane(i),
+        geometric_approach_m: geometric_approach_m.lane(i),
+        film_sensitivity: film_sensitivity.lane(i),
+        law: law1.lane(i),
         start_offset: 0.0,
-    };
+    });
 
-    let per_contact = films.contacts_from(&solved2.last, solved2.film_m);
-    CoupledRoller {
+    Finished {
         load,
         approach_m,
         ln_load,
-        films: per_contact,
+        films: films.contacts_from(&solved2.last, solved2.film_m),
         film_slope_m_per_n: film_slope_m / load_n,
-        regimes: regime_axes.map(|axis| axis.at(ln_load)),
     }
 }
 
@@ -527,5 +613,137 @@ mod tests {
                 assert!(one.lam.is_finite());
             }
         }
+    }
+
+    /// The host's lanes run the rest of a roller's solve after its slice pass — power-law
+    /// fit, Newton steps, finish and memory update (`prepare_sliced`, `iterate`, `finish_lanes`
+    /// on `F32x4`) — exactly as the M4 runs one roller alone (the same functions on `f32`,
+    /// `finish_roller`): 16 crowned hub-bearing rollers from separated (−13.5 µm) to heavily
+    /// loaded (+9 µm), tilted both ways, first from a cold memory, then twice from the warm
+    /// memory of the step before with the geometric approach moved by ±0.4 µm (light
+    /// rollers then see an over-predicted film: the slices carry nothing and the last law
+    /// stands in). Bit for bit in every output and memory field.
+    #[test]
+    fn lanes_finish_each_roller_bit_for_bit() {
+        use crate::contact::ContactLaw;
+        use crate::params::{reduced_modulus, BearingGeometry, Crown, Material};
+        let geometry = BearingGeometry::new(
+            0.060,
+            0.0088,
+            0.015,
+            17,
+            Crown::Logarithmic { scale: 1.0 },
+            -2.0e-6,
+        )
+        .unwrap();
+        let modulus = reduced_modulus(&Material::STEEL, &Material::STEEL);
+        let roller = SlicedRoller::<10>::new(&geometry, modulus, ContactLaw::Palmgren);
+        let contact = |r: f32| ContactInput {
+            load_n: 0.0,
+            length_m: 0.015,
+            entrainment_speed_m_s: 9.0,
+            reduced_radius_m: r,
+            reduced_modulus_pa: modulus,
+            pressure_viscosity_pa_inv: 2.1e-8,
+            viscosity_pa_s: 0.08,
+        };
+        let contacts = [contact(3.7e-3), contact(5.1e-3)];
+        let martin = contacts.map(|c| {
+            MARTIN_CENTRAL
+                * c.viscosity_pa_s
+                * c.entrainment_speed_m_s
+                * c.reduced_radius_m
+                * c.length_m
+        });
+        let mut table = FilmTable::default();
+        let films = table.step(&Regression, contacts, martin, (2.0, 9.0), true);
+        let axes = [RegimeAxis::new(6.0, 1.5), RegimeAxis::new(5.5, 1.6)];
+        let memory_bits = |m: &RollerMemory| {
+            [
+                m.ln_load,
+                m.film_m,
+                m.geometric_approach_m,
+                m.film_sensitivity,
+                m.law.offset_m,
+                m.law.ln_load_ref,
+                m.law.span_m,
+                m.law.exponent,
+                m.start_offset,
+            ]
+            .map(f32::to_bits)
+        };
+        let roller_bits = |c: &CoupledRoller| {
+            let l = &c.load;
+            let [(c_in, m_in), (c_out, m_out)] = c.films;
+            [
+                l.load_n,
+                l.moment_nm,
+                l.stiffness_n_per_m,
+                l.stiffness_moment_n,
+                l.stiffness_tilt_nm,
+                l.stiffness_derivative_n_per_m2,
+                c.approach_m,
+                c.ln_load,
+                c_in,
+                m_in,
+                c_out,
+                m_out,
+                c.film_slope_m_per_n,
+            ]
+            .map(f32::to_bits)
+        };
+        let mut alone = [RollerMemory::cold(&roller); 16];
+        let mut lanes = alone;
+        let mut loaded = 0;
+        for step in 0..3 {
+            let place = |k: usize| {
+                let shift =
+                    if step == 0 { 0.0 } else { 0.4e-6 } * if k % 2 == 0 { 1.0 } else { -1.0 };
+                (
+                    1.5e-6 * (k as f32 - 9.0) + shift,
+                    3.0e-4 * ((k % 5) as f32 - 2.0),
+                )
+            };
+            let mut expected = [CoupledRoller::default(); 16];
+            for (k, (memory, out)) in alone.iter_mut().zip(expected.iter_mut()).enumerate() {
+                let (geometric, tilt) = place(k);
+                let mut p = prepare_roller(&roller, geometric, tilt, memory);
+                for _ in 0..NEWTON_ITERATIONS {
+                    p.newton.iterate(&films);
+                }
+                *out = finish_roller(&p, &films, &axes, memory);
+                loaded += usize::from(out.load.load_n > 1.0);
+            }
+            for (g, (memories, expected)) in lanes
+                .chunks_exact_mut(4)
+                .zip(expected.chunks_exact(4))
+                .enumerate()
+            {
+                let places: [(f32, f32); 4] = core::array::from_fn(|i| place(4 * g + i));
+                let mut group: [RollerMemory; 4] = core::array::from_fn(|i| memories[i]);
+                let approach1: [f32; 4] =
+                    core::array::from_fn(|i| predicted_approach(places[i].0, &group[i]));
+                let r1 = core::array::from_fn(|i| roller.evaluate(approach1[i], places[i].1));
+                let mut p = prepare_sliced::<F32x4>(
+                    r1,
+                    F32x4::from_array(approach1),
+                    F32x4::from_array(places.map(|p| p.0)),
+                    &group,
+                );
+                for _ in 0..NEWTON_ITERATIONS {
+                    p.newton.iterate(&films);
+                }
+                let finished = finish_lanes(&p, &films, &mut group);
+                for (i, one) in expected.iter().enumerate() {
+                    let from_lanes = finished.roller(i, &axes);
+                    assert_eq!(roller_bits(&from_lanes), roller_bits(one), "{step} {g} {i}");
+                    assert_eq!(from_lanes.regimes, one.regimes);
+                    assert_eq!(memory_bits(&group[i]), memory_bits(&alone[4 * g + i]));
+                }
+                memories.copy_from_slice(&group);
+            }
+        }
+        // Both kinds were met: carrying rollers, and separated ones.
+        assert!(loaded > 10 && loaded < 40, "{loaded} of 48 loaded");
     }
 }

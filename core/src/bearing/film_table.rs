@@ -30,7 +30,7 @@
 
 use crate::film::{ContactInput, FilmModel, MARTIN_CENTRAL, MARTIN_MINIMUM};
 use crate::lanes::Real;
-use crate::math::{exp, exp_in_range, ln, max, min, select, sqrt, sqrt_non_negative};
+use crate::math::{exp, exp_in_range, ln, max, min, sqrt};
 
 /// Nodes of the film table per contact kind.
 pub const TABLE_NODES: usize = 96;
@@ -126,22 +126,21 @@ impl Default for FilmSum {
 }
 
 impl<T: Real> FilmSums<T> {
-    /// The sums of single rollers side by side.
+    /// Empty sums, with λ in the table's first cell: a solve's before its first evaluation.
     #[inline(always)]
-    pub(crate) fn from_lanes(sums: &T::PerLane<FilmSum>) -> Self {
+    pub(crate) fn zero() -> Self {
+        let zero = T::splat(0.0);
         Self {
-            total_m: T::from_per_lane(sums, |s| s.total_m),
-            slope_m: T::from_per_lane(sums, |s| s.slope_m),
-            inv_load: T::from_per_lane(sums, |s| s.inv_load),
-            central: [
-                T::from_per_lane(sums, |s| s.central[0]),
-                T::from_per_lane(sums, |s| s.central[1]),
-            ],
-            cell: T::map_items(sums, |s| s.cell),
+            total_m: zero,
+            slope_m: zero,
+            inv_load: zero,
+            central: [zero; 2],
+            cell: T::build(|_| Cell::default()),
         }
     }
 
     /// The sum of lane `i` (a zero sum beyond the lanes).
+    #[cfg(test)]
     #[inline(always)]
     pub(crate) fn lane(&self, i: usize) -> FilmSum {
         FilmSum {
@@ -333,26 +332,28 @@ impl StepFilms<'_> {
     /// films of both contacts are then scaled by total_m/last.total_m, so that the central
     /// films add up to the root's sum. (The last Newton step is small, and this spares a
     /// second look-up in the table at the root.)
+    /// Of one roller, or of the rollers in the lanes of `T`.
     #[inline(always)]
-    pub(crate) fn contacts_from(&self, last: &FilmSum, total_m: f32) -> [(f32, f32); 2] {
+    pub(crate) fn contacts_from<T: Real>(&self, last: &FilmSums<T>, total_m: T) -> [(T, T); 2] {
         // The ratio, and u^κ: `last.central` and the table are in the table's units.
-        let scale = select(
-            last.total_m > 0.0,
-            total_m / max(last.total_m, 1.0e-30),
-            0.0,
-        ) * self.speed_scale;
-        let mut out = [(0.0, 0.0); 2];
+        let zero = T::splat(0.0);
+        let scale = T::select(
+            last.total_m.gt(zero),
+            total_m / last.total_m.max(T::splat(1.0e-30)),
+            zero,
+        ) * T::splat(self.speed_scale);
+        let mut out = [(zero, zero); 2];
         for (((o, minimum), &b), &central) in out
             .iter_mut()
             .zip(self.table.minimum.iter())
             .zip(self.martin_per_scale.iter())
             .zip(last.central.iter())
         {
-            let hm = last.cell.interpolate(minimum).0;
-            let hr_min = b * last.inv_load * (MARTIN_MINIMUM / MARTIN_CENTRAL);
+            let hm = T::from_per_lane(&last.cell, |c| c.interpolate(minimum).0);
+            let hr_min = T::splat(b) * last.inv_load * T::splat(MARTIN_MINIMUM / MARTIN_CENTRAL);
             *o = (
                 central * scale,
-                sqrt_non_negative(hm * hm + hr_min * hr_min) * scale,
+                (hm * hm + hr_min * hr_min).sqrt_non_negative() * scale,
             );
         }
         out

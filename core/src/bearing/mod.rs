@@ -25,8 +25,8 @@ use crate::math::{ln, select, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use core::f32::consts::PI;
 use coupling::{
-    finish_roller, predicted_approach, prepare_roller, prepare_sliced, ContactContext, Newton,
-    Prepared, RollerMemory,
+    finish_lanes, finish_roller, predicted_approach, prepare_roller, prepare_sliced,
+    ContactContext, CoupledRoller, RollerMemory,
 };
 use film_table::FilmTable;
 use output::StiffnessSums;
@@ -340,7 +340,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         // one after another. The operations of each roller are the same either way, so are
         // the results, bit for bit (tests in `lanes`, `coupling` and `slicing`; `hil-sim qemu`
         // compares whole traces).
-        let mut prepared = [Prepared::default(); Z];
+        let mut coupled = [CoupledRoller::default(); Z];
         if LOCKSTEP {
             // The slice passes of all rollers together, in SIMD lanes.
             let mut approach1 = [0.0f32; Z];
@@ -356,29 +356,37 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             }
             let mut sliced = [crate::contact::RollerLoad::default(); Z];
             self.roller.evaluate_many(&approach1, &tilt, &mut sliced);
-            for ((((p, place), memory), &a), &r1) in prepared
-                .iter_mut()
-                .zip(places.iter())
-                .zip(self.memory.iter())
-                .zip(approach1.iter())
-                .zip(sliced.iter())
+            // The rest of each roller's solve four rollers at a time in SIMD lanes: the power
+            // law, the Newton steps and the finish, the lanes passed from one stage to the
+            // next in registers. (A short last group fills its idle lanes with copies of its
+            // last roller, whose results are discarded.)
+            for ((((out, memory), places), approach1), sliced) in coupled
+                .chunks_mut(4)
+                .zip(self.memory.chunks_mut(4))
+                .zip(places.chunks(4))
+                .zip(approach1.chunks(4))
+                .zip(sliced.chunks(4))
             {
-                *p = prepare_sliced(r1, a, place.geometric_m, memory);
-            }
-            // The Newton steps of four rollers at a time in SIMD lanes (a short last group
-            // runs with idle lanes: default states, discarded).
-            for group in prepared.chunks_mut(4) {
-                let mut states = [Newton::default(); 4];
-                states
-                    .iter_mut()
-                    .zip(group.iter())
-                    .for_each(|(s, p)| *s = p.newton);
-                let mut lanes = Newton::<F32x4>::start_lanes(&states);
+                let mut memories = lanes_of(memory);
+                let geometric = F32x4::from_array(lanes_of(places).map(|p| p.geometric_m));
+                let mut p = prepare_sliced(
+                    lanes_of(sliced),
+                    F32x4::from_array(lanes_of(approach1)),
+                    geometric,
+                    &memories,
+                );
                 for _ in 0..NEWTON_ITERATIONS {
-                    lanes.iterate(&films);
+                    p.newton.iterate(&films);
                 }
-                for (i, p) in group.iter_mut().enumerate() {
-                    lanes.store_lane(i, &mut p.newton);
+                let finished = finish_lanes(&p, &films, &mut memories);
+                for (i, ((o, m), new)) in out
+                    .iter_mut()
+                    .zip(memory.iter_mut())
+                    .zip(memories.iter())
+                    .enumerate()
+                {
+                    *o = finished.roller(i, &regime_axes);
+                    *m = *new;
                 }
             }
         }
@@ -388,8 +396,8 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             state,
             &places,
             |roller, memory, j, geometric, tilt| {
-                let p = if LOCKSTEP {
-                    prepared.get(j).copied().unwrap_or_default()
+                let r = if LOCKSTEP {
+                    coupled.get(j).copied().unwrap_or_default()
                 } else {
                     let mut p = prepare_roller(roller, geometric, tilt, memory);
                     // A local copy, which the compiler keeps in registers.
@@ -398,9 +406,8 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                         newton.iterate(&films);
                     }
                     p.newton = newton;
-                    p
+                    finish_roller(&p, &films, &regime_axes, memory)
                 };
-                let r = finish_roller(&p, &films, &regime_axes, memory);
                 let loaded = r.load.load_n >= 1.0;
                 span = (
                     crate::math::min(span.0, crate::math::select(loaded, r.ln_load, f32::MAX)),
@@ -503,6 +510,13 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
 /// lanes, four at a time (hosts), or each roller in turn (bare-metal ARM: the in-order
 /// Cortex-M).
 const LOCKSTEP: bool = !cfg!(all(target_arch = "arm", target_os = "none"));
+
+/// The four lanes of a group of rollers' items: a short group's idle lanes repeat its last
+/// item (realistic numbers, whose results are discarded).
+#[inline(always)]
+fn lanes_of<U: Copy + Default>(group: &[U]) -> [U; 4] {
+    core::array::from_fn(|i| group.get(i).or(group.last()).copied().unwrap_or_default())
+}
 
 /// A roller's direction (cos, sin of θ_j), geometric approach (m) and tilt (rad) at a step.
 #[derive(Clone, Copy, Debug, Default)]
