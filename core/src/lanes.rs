@@ -37,6 +37,12 @@ pub(crate) trait Real:
     fn le(self, other: Self) -> Self::Mask;
     /// `self < other` per lane.
     fn lt(self, other: Self) -> Self::Mask;
+    /// `self == other` per lane.
+    fn eq(self, other: Self) -> Self::Mask;
+    /// 1.0 where `mask`, else 0.0.
+    fn indicator(mask: Self::Mask) -> Self;
+    /// Each lane, in [0, 2²⁴), truncated to an integer: as an index, and as a float.
+    fn truncate_index(self) -> (Self::PerLane<usize>, Self);
     /// `a` where `mask`, else `b`, by bit masks (`crate::math::select`).
     fn select(mask: Self::Mask, a: Self, b: Self) -> Self;
     /// `a` where `mask`, else `b`: [`Real::select`]'s result, as a plain choice for one
@@ -54,11 +60,6 @@ pub(crate) trait Real:
     fn split_normal(self) -> (Self, Self);
     /// `crate::math::round_with_pow2` per lane.
     fn round_with_pow2(self) -> (Self, Self);
-    /// `f` of each lane.
-    fn map_lanes<U: Copy + Default + core::fmt::Debug>(
-        self,
-        f: impl FnMut(f32) -> U,
-    ) -> Self::PerLane<U>;
     /// Lanes from `f` of each per-lane item.
     fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
         items: &Self::PerLane<U>,
@@ -101,6 +102,19 @@ impl Real for f32 {
         self < other
     }
     #[inline(always)]
+    fn eq(self, other: Self) -> bool {
+        self == other
+    }
+    #[inline(always)]
+    fn indicator(mask: bool) -> Self {
+        f32::from(u8::from(mask))
+    }
+    #[inline(always)]
+    fn truncate_index(self) -> (usize, Self) {
+        let index = self as usize;
+        (index, index as f32)
+    }
+    #[inline(always)]
     fn select(mask: bool, a: Self, b: Self) -> Self {
         crate::math::select(mask, a, b)
     }
@@ -131,10 +145,6 @@ impl Real for f32 {
     #[inline(always)]
     fn round_with_pow2(self) -> (Self, Self) {
         crate::math::round_with_pow2(self)
-    }
-    #[inline(always)]
-    fn map_lanes<U: Copy + Default + core::fmt::Debug>(self, mut f: impl FnMut(f32) -> U) -> U {
-        f(self)
     }
     #[inline(always)]
     fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
@@ -200,6 +210,18 @@ impl Real for F32x4 {
         simd::lt(self, other)
     }
     #[inline(always)]
+    fn eq(self, other: Self) -> Mask4 {
+        simd::eq(self, other)
+    }
+    #[inline(always)]
+    fn indicator(mask: Mask4) -> Self {
+        simd::indicator(mask)
+    }
+    #[inline(always)]
+    fn truncate_index(self) -> ([usize; 4], Self) {
+        simd::truncate_index(self)
+    }
+    #[inline(always)]
     fn select(mask: Mask4, a: Self, b: Self) -> Self {
         simd::select(mask, a, b)
     }
@@ -226,10 +248,6 @@ impl Real for F32x4 {
     #[inline(always)]
     fn round_with_pow2(self) -> (Self, Self) {
         simd::round_with_pow2(self)
-    }
-    #[inline(always)]
-    fn map_lanes<U: Copy + Default + core::fmt::Debug>(self, f: impl FnMut(f32) -> U) -> [U; 4] {
-        self.to_array().map(f)
     }
     #[inline(always)]
     fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
@@ -267,11 +285,11 @@ impl Real for F32x4 {
 #[cfg(target_arch = "x86_64")]
 mod simd {
     use core::arch::x86_64::{
-        __m128, _mm_add_epi32, _mm_add_ps, _mm_and_ps, _mm_and_si128, _mm_andnot_ps,
-        _mm_castps_si128, _mm_castsi128_ps, _mm_cmpge_ps, _mm_cmpgt_ps, _mm_cmple_ps, _mm_cmplt_ps,
-        _mm_cvtepi32_ps, _mm_div_ps, _mm_max_ps, _mm_min_ps, _mm_mul_ps, _mm_or_ps, _mm_or_si128,
-        _mm_set1_epi32, _mm_set1_ps, _mm_set_ps, _mm_slli_epi32, _mm_sqrt_ps, _mm_srli_epi32,
-        _mm_sub_epi32, _mm_sub_ps, _mm_xor_ps,
+        __m128, __m128i, _mm_add_epi32, _mm_add_ps, _mm_and_ps, _mm_and_si128, _mm_andnot_ps,
+        _mm_castps_si128, _mm_castsi128_ps, _mm_cmpeq_ps, _mm_cmpge_ps, _mm_cmpgt_ps, _mm_cmple_ps,
+        _mm_cmplt_ps, _mm_cvtepi32_ps, _mm_cvttps_epi32, _mm_div_ps, _mm_max_ps, _mm_min_ps,
+        _mm_mul_ps, _mm_or_ps, _mm_or_si128, _mm_set1_epi32, _mm_set1_ps, _mm_set_ps,
+        _mm_slli_epi32, _mm_sqrt_ps, _mm_srli_epi32, _mm_sub_epi32, _mm_sub_ps, _mm_xor_ps,
     };
     use core::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
 
@@ -354,6 +372,26 @@ mod simd {
     #[inline(always)]
     pub(super) fn lt(a: F32x4, b: F32x4) -> Mask4 {
         Mask4(unsafe { _mm_cmplt_ps(a.0, b.0) })
+    }
+    #[inline(always)]
+    pub(super) fn eq(a: F32x4, b: F32x4) -> Mask4 {
+        Mask4(unsafe { _mm_cmpeq_ps(a.0, b.0) })
+    }
+    #[inline(always)]
+    pub(super) fn indicator(mask: Mask4) -> F32x4 {
+        // The mask's all-ones lanes keep 1.0's bits, the others clear them to +0.0.
+        F32x4(unsafe { _mm_and_ps(mask.0, _mm_set1_ps(1.0)) })
+    }
+    #[inline(always)]
+    pub(super) fn truncate_index(a: F32x4) -> ([usize; 4], F32x4) {
+        // CVTTPS2DQ truncates like `as` for lanes in [0, 2³¹); the integers' conversion back
+        // is exact below 2²⁴ (the table's indices are below 100).
+        unsafe {
+            let index = _mm_cvttps_epi32(a.0);
+            // SAFETY (`transmute`): `__m128i` and `[i32; 4]` are both 16 bytes of four i32.
+            let lanes = core::mem::transmute::<__m128i, [i32; 4]>(index);
+            (lanes.map(|i| i as usize), F32x4(_mm_cvtepi32_ps(index)))
+        }
     }
     #[inline(always)]
     pub(super) fn select(mask: Mask4, a: F32x4, b: F32x4) -> F32x4 {
@@ -523,6 +561,19 @@ mod simd {
         a.compare(b, |a, b| a < b)
     }
     #[inline(always)]
+    pub(super) fn eq(a: F32x4, b: F32x4) -> Mask4 {
+        a.compare(b, |a, b| a == b)
+    }
+    #[inline(always)]
+    pub(super) fn indicator(mask: Mask4) -> F32x4 {
+        F32x4(mask.0.map(|m| f32::from(u8::from(m))))
+    }
+    #[inline(always)]
+    pub(super) fn truncate_index(a: F32x4) -> ([usize; 4], F32x4) {
+        let index = a.0.map(|v| v as usize);
+        (index, F32x4(index.map(|i| i as f32)))
+    }
+    #[inline(always)]
     pub(super) fn select(mask: Mask4, a: F32x4, b: F32x4) -> F32x4 {
         let [m0, m1, m2, m3] = mask.0;
         let [a0, a1, a2, a3] = a.0;
@@ -615,6 +666,7 @@ mod tests {
                     F32x4::select(va.ge(vb), va, vb).to_array(),
                     va.min(vb).to_array(),
                     F32x4::select(va.lt(vb), va, vb).to_array(),
+                    F32x4::indicator(va.eq(vb)).to_array(),
                 ];
                 for i in 0..4 {
                     let (x, y) = (a[i], b[i]);
@@ -629,6 +681,7 @@ mod tests {
                         crate::math::select(x >= y, x, y),
                         crate::math::min(x, y),
                         crate::math::select(x < y, x, y),
+                        f32::from(u8::from(x == y)),
                     ];
                     for (l, o) in lanes.iter().zip(one) {
                         assert_eq!(bits(l[i]), bits(o), "{x} {y}");
@@ -645,6 +698,14 @@ mod tests {
                     );
                     let (n1, p1) = crate::math::round_with_pow2(a[i].clamp(-126.0, 127.0));
                     assert_eq!((bits(n.lane(i)), bits(p.lane(i))), (bits(n1), bits(p1)));
+                }
+                // Truncation to an index, of lanes in the range of table indices (the values
+                // folded into [0, 2²⁴); NaN taken as 0).
+                let small = a.map(|v| if v.is_nan() { 0.0 } else { v.abs().min(1.6e7) });
+                let (index, as_float) = F32x4::from_array(small).truncate_index();
+                for (i, &x) in small.iter().enumerate() {
+                    let (i1, f1) = x.truncate_index();
+                    assert_eq!((index[i], bits(as_float.lane(i))), (i1, bits(f1)), "{x}");
                 }
                 // The bit-field split and the logarithm built on it, of positive normal lanes
                 // (the values folded into the normal range; NaN taken as 1).

@@ -107,7 +107,7 @@ pub(crate) struct FilmSums<T: Real> {
     /// The terms of the sum, each contact's central film, divided by u^κ.
     central: [T; 2],
     /// Where λ fell in the table.
-    cell: T::PerLane<Cell>,
+    cell: Cell<T>,
 }
 
 /// Film sum of one roller.
@@ -135,7 +135,11 @@ impl<T: Real> FilmSums<T> {
             slope_m: zero,
             inv_load: zero,
             central: [zero; 2],
-            cell: T::build(|_| Cell::default()),
+            cell: Cell {
+                index: T::build(|_| 0),
+                fraction: zero,
+                slope_scale: zero,
+            },
         }
     }
 
@@ -148,44 +152,60 @@ impl<T: Real> FilmSums<T> {
             slope_m: self.slope_m.lane(i),
             inv_load: self.inv_load.lane(i),
             central: self.central.map(|c| c.lane(i)),
-            cell: T::item(&self.cell, i),
+            cell: Cell {
+                index: T::item(&self.cell.index, i),
+                fraction: self.cell.fraction.lane(i),
+                slope_scale: self.cell.slope_scale.lane(i),
+            },
         }
     }
 }
 
 /// Where λ falls in the table: the cell's first node and the fraction across it, held to the
 /// table at both ends (the film is continued flat beyond them: below 1 N Martin's film rules,
-/// above 144 kN no roller goes).
-#[derive(Clone, Copy, Debug, Default)]
-struct Cell {
-    index: usize,
-    fraction: f32,
+/// above 144 kN no roller goes). Of one roller, or of the rollers in the lanes of `T`: the
+/// host computes the cells of four rollers in SIMD lanes and looks up only the nodes lane by
+/// lane.
+#[derive(Clone, Copy, Debug)]
+struct Cell<T: Real = f32> {
+    index: T::PerLane<usize>,
+    fraction: T,
     /// 1/Δλ inside the table, 0 beyond it (the slope of the flat continuation).
-    slope_scale: f32,
+    slope_scale: T,
 }
 
-impl Cell {
+impl Default for Cell {
+    fn default() -> Self {
+        Self {
+            index: 0,
+            fraction: 0.0,
+            slope_scale: 0.0,
+        }
+    }
+}
+
+impl<T: Real> Cell<T> {
     #[inline(always)]
-    fn at(ln_load: f32) -> Self {
-        let position = (ln_load - LN_LOAD_FIRST) * (1.0 / TABLE_STEP);
+    fn at(ln_load: T) -> Self {
+        let position = (ln_load - T::splat(LN_LOAD_FIRST)) * T::splat(1.0 / TABLE_STEP);
         let end = (TABLE_NODES - 1) as f32;
-        let clamped = min(max(position, 0.0), end);
+        let clamped = position.max(T::splat(0.0)).min(T::splat(end));
         // One float-to-integer conversion at a fixed cost; the clamp keeps it in the table
         // (the last node starts no cell: at the end the fraction is 1 across the last cell).
-        let index = min(clamped, end - 1.0) as usize;
+        let (index, index_f32) = clamped.min(T::splat(end - 1.0)).truncate_index();
         Self {
             index,
-            fraction: clamped - index as f32,
+            fraction: clamped - index_f32,
             // Beyond the table the film is continued flat: the clamp moved the position.
-            slope_scale: (1.0 / TABLE_STEP) * f32::from(u8::from(clamped == position)),
+            slope_scale: T::splat(1.0 / TABLE_STEP) * T::indicator(clamped.eq(position)),
         }
     }
 
     /// Value and d/dλ of the linear interpolant of `nodes`.
     #[inline(always)]
-    fn interpolate(&self, nodes: &[f32; TABLE_NODES]) -> (f32, f32) {
-        let a = nodes.get(self.index).copied().unwrap_or(0.0);
-        let b = nodes.get(self.index + 1).copied().unwrap_or(0.0);
+    fn interpolate(&self, nodes: &[f32; TABLE_NODES]) -> (T, T) {
+        let a = T::from_per_lane(&self.index, |&i| nodes.get(i).copied().unwrap_or(0.0));
+        let b = T::from_per_lane(&self.index, |&i| nodes.get(i + 1).copied().unwrap_or(0.0));
         let d = b - a;
         (a + self.fraction * d, d * self.slope_scale)
     }
@@ -295,7 +315,7 @@ impl StepFilms<'_> {
     pub(crate) fn sum_at<T: Real>(&self, ln_load: T) -> FilmSums<T> {
         // λ is bracketed by the scalar solve: in range.
         let inv_load = exp_in_range(-ln_load);
-        let cell = ln_load.map_lanes(Cell::at);
+        let cell = Cell::at(ln_load);
         let mut total_m = T::splat(0.0);
         let mut slope_m = T::splat(0.0);
         let mut central = [T::splat(0.0); 2];
@@ -307,8 +327,7 @@ impl StepFilms<'_> {
             .zip(self.martin_per_scale.iter())
             .zip(central.iter_mut())
         {
-            let e = T::from_per_lane(&cell, |c| c.interpolate(nodes).0);
-            let de = T::from_per_lane(&cell, |c| c.interpolate(nodes).1);
+            let (e, de) = cell.interpolate(nodes);
             let hydro = T::splat(b) * inv_load;
             // e and h_RI are finite (table values, and B/Q with λ bracketed): no clamp needed.
             let h = (e * e + hydro * hydro).sqrt_non_negative();
@@ -349,7 +368,7 @@ impl StepFilms<'_> {
             .zip(self.martin_per_scale.iter())
             .zip(last.central.iter())
         {
-            let hm = T::from_per_lane(&last.cell, |c| c.interpolate(minimum).0);
+            let hm = last.cell.interpolate(minimum).0;
             let hr_min = T::splat(b) * last.inv_load * T::splat(MARTIN_MINIMUM / MARTIN_CENTRAL);
             *o = (
                 central * scale,
