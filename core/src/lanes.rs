@@ -65,17 +65,17 @@ pub(crate) trait Real:
         items: &Self::PerLane<U>,
         f: impl FnMut(&U) -> f32,
     ) -> Self;
-    /// `f` of each per-lane item.
-    fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
-        items: &Self::PerLane<U>,
-        f: impl FnMut(&U) -> V,
-    ) -> Self::PerLane<V>;
     /// Lane `i` (0 beyond the lanes).
     fn lane(self, i: usize) -> f32;
     /// Item `i` of per-lane items (the default beyond the lanes).
+    #[cfg(test)]
     fn item<U: Copy + Default + core::fmt::Debug>(items: &Self::PerLane<U>, i: usize) -> U;
     /// Per-lane items `f(i)` of lanes `i` = 0, 1, ….
     fn build<U: Copy + Default + core::fmt::Debug>(f: impl FnMut(usize) -> U) -> Self::PerLane<U>;
+    /// Lanes `f` of a group's items, lane `i` from item `i`: the lanes beyond a short group
+    /// repeat its last item (realistic numbers for idle lanes, whose results are discarded);
+    /// 0 for an empty group.
+    fn gather<U>(items: &[U], f: impl Fn(&U) -> f32) -> Self;
 }
 
 impl Real for f32 {
@@ -154,13 +154,6 @@ impl Real for f32 {
         f(items)
     }
     #[inline(always)]
-    fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
-        items: &U,
-        mut f: impl FnMut(&U) -> V,
-    ) -> V {
-        f(items)
-    }
-    #[inline(always)]
     fn lane(self, i: usize) -> f32 {
         if i == 0 {
             self
@@ -168,6 +161,7 @@ impl Real for f32 {
             0.0
         }
     }
+    #[cfg(test)]
     #[inline(always)]
     fn item<U: Copy + Default + core::fmt::Debug>(items: &U, i: usize) -> U {
         if i == 0 {
@@ -179,6 +173,10 @@ impl Real for f32 {
     #[inline(always)]
     fn build<U: Copy + Default + core::fmt::Debug>(mut f: impl FnMut(usize) -> U) -> U {
         f(0)
+    }
+    #[inline(always)]
+    fn gather<U>(items: &[U], f: impl Fn(&U) -> f32) -> Self {
+        items.first().map_or(0.0, f)
     }
 }
 
@@ -257,16 +255,10 @@ impl Real for F32x4 {
         Self::from_array(items.each_ref().map(f))
     }
     #[inline(always)]
-    fn map_items<U: Copy + Default + core::fmt::Debug, V: Copy + Default + core::fmt::Debug>(
-        items: &[U; 4],
-        f: impl FnMut(&U) -> V,
-    ) -> [V; 4] {
-        items.each_ref().map(f)
-    }
-    #[inline(always)]
     fn lane(self, i: usize) -> f32 {
         self.to_array().get(i).copied().unwrap_or(0.0)
     }
+    #[cfg(test)]
     #[inline(always)]
     fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; 4], i: usize) -> U {
         items.get(i).copied().unwrap_or_default()
@@ -274,6 +266,12 @@ impl Real for F32x4 {
     #[inline(always)]
     fn build<U: Copy + Default + core::fmt::Debug>(f: impl FnMut(usize) -> U) -> [U; 4] {
         core::array::from_fn(f)
+    }
+    #[inline(always)]
+    fn gather<U>(items: &[U], f: impl Fn(&U) -> f32) -> Self {
+        Self::from_array(core::array::from_fn(|i| {
+            items.get(i).or(items.last()).map_or(0.0, &f)
+        }))
     }
 }
 
@@ -724,6 +722,29 @@ mod tests {
                     assert_eq!(bits(log.lane(i)), bits(crate::math::ln_normal(x)), "{x}");
                 }
             }
+        }
+    }
+
+    /// A group's lanes: lane i from item i, a short group's idle lanes repeating its last item,
+    /// an empty group zeros; one number takes the first item (references: the items).
+    #[test]
+    fn gather_takes_lane_i_from_item_i() {
+        let items = [3.0f32, -1.5, 7.25, 0.5, 9.0];
+        for n in 0..=items.len() {
+            let group = &items[..n];
+            let lanes = F32x4::gather(group, |&v| v * 2.0).to_array();
+            for (i, lane) in lanes.iter().enumerate() {
+                let expected = match (i < n, n) {
+                    (true, _) => items[i] * 2.0,
+                    (false, 0) => 0.0,
+                    (false, _) => items[n - 1] * 2.0,
+                };
+                assert_eq!(lane.to_bits(), expected.to_bits(), "{n} items, lane {i}");
+            }
+            assert_eq!(
+                f32::gather(group, |&v| v * 2.0).to_bits(),
+                group.first().map_or(0.0, |&v| v * 2.0).to_bits()
+            );
         }
     }
 }

@@ -24,10 +24,10 @@
 //! larger jumps cost accuracy at the lightest loads for one step (see the test).
 
 use super::film_table::{FilmSums, StepFilms};
-use crate::contact::{RollerLoad, SlicedRoller};
+use crate::contact::{RollerLoad, RollerLoads, SlicedRoller};
 use crate::film::{ContactInput, Regime, RegimeAxis};
 use crate::lanes::Real;
-use crate::math::{exp2_in_range, exp_in_range, ln_normal, max};
+use crate::math::{exp2_in_range, exp_in_range, ln_normal};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step. Two suffice
 /// with the step of `Newton::iterate`: the warm start's accuracy test passes, and the shaft
@@ -71,24 +71,58 @@ pub(crate) struct CoupledRoller {
     pub regimes: [Regime; 2],
 }
 
-/// What a roller carries from one step to the next: the warm start.
+/// What a roller carries from one step to the next: the warm start. Of one roller, or of the
+/// rollers in the lanes of `T` (the host's lockstep stages).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct RollerMemory {
+pub(crate) struct RollerMemory<T: Real = f32> {
     /// ln Q at the last step.
-    pub ln_load: f32,
+    pub ln_load: T,
     /// Film sum H at the last step (m); 0 before the first.
-    pub film_m: f32,
+    pub film_m: T,
     /// Geometric approach at the last step (m).
-    pub geometric_approach_m: f32,
+    pub geometric_approach_m: T,
     /// dH/dδ_geo at the last step: how the film followed the geometric approach (−1 … 0).
-    pub film_sensitivity: f32,
+    pub film_sensitivity: T,
     /// The power law fitted to the slices at the last step; before the first step, a straight
     /// untilted roller's law from its first touching slice (`PowerLaw::untouched`).
-    pub law: PowerLaw,
+    pub law: PowerLaw<T>,
     /// Added to ln Q at the start of the solve: [`COLD_START_OFFSET`] before the first step
     /// (no film predicted, so the slices' load is the dry one, where the missing approach is
     /// zero), then 0.
-    pub start_offset: f32,
+    pub start_offset: T,
+}
+
+impl<T: Real> RollerMemory<T> {
+    /// The memories of a group of rollers in lanes (see [`Real::gather`]).
+    #[inline(always)]
+    pub(crate) fn gather(group: &[RollerMemory]) -> Self {
+        Self {
+            ln_load: T::gather(group, |m| m.ln_load),
+            film_m: T::gather(group, |m| m.film_m),
+            geometric_approach_m: T::gather(group, |m| m.geometric_approach_m),
+            film_sensitivity: T::gather(group, |m| m.film_sensitivity),
+            law: PowerLaw {
+                offset_m: T::gather(group, |m| m.law.offset_m),
+                ln_load_ref: T::gather(group, |m| m.law.ln_load_ref),
+                span_m: T::gather(group, |m| m.law.span_m),
+                exponent: T::gather(group, |m| m.law.exponent),
+            },
+            start_offset: T::gather(group, |m| m.start_offset),
+        }
+    }
+
+    /// The memory of the roller in lane `i`.
+    #[inline(always)]
+    pub(crate) fn lane(&self, i: usize) -> RollerMemory {
+        RollerMemory {
+            ln_load: self.ln_load.lane(i),
+            film_m: self.film_m.lane(i),
+            geometric_approach_m: self.geometric_approach_m.lane(i),
+            film_sensitivity: self.film_sensitivity.lane(i),
+            law: self.law.lane(i),
+            start_offset: self.start_offset.lane(i),
+        }
+    }
 }
 
 impl RollerMemory {
@@ -136,17 +170,6 @@ impl PowerLaw {
 }
 
 impl<T: Real> PowerLaw<T> {
-    /// The laws of single rollers side by side.
-    #[inline(always)]
-    fn from_lanes(laws: &T::PerLane<PowerLaw>) -> Self {
-        Self {
-            offset_m: T::from_per_lane(laws, |l| l.offset_m),
-            ln_load_ref: T::from_per_lane(laws, |l| l.ln_load_ref),
-            span_m: T::from_per_lane(laws, |l| l.span_m),
-            exponent: T::from_per_lane(laws, |l| l.exponent),
-        }
-    }
-
     /// The law of lane `i`.
     #[inline(always)]
     fn lane(&self, i: usize) -> PowerLaw {
@@ -175,11 +198,11 @@ impl<T: Real> PowerLaw<T> {
     /// with the approach, a larger n. An unloaded roller takes `untouched`.
     /// Of one roller, or of the rollers in the lanes of `T`, with the loads `loads`.
     #[inline(always)]
-    fn fit(loads: &T::PerLane<RollerLoad>, approach_m: T, untouched: &Self) -> Self {
+    fn fit(loads: &RollerLoads<T>, approach_m: T, untouched: &Self) -> Self {
         // Both branches are computed and selected (see `math::select`): fixed work.
-        let q = T::from_per_lane(loads, |l| l.load_n);
-        let k = T::from_per_lane(loads, |l| l.stiffness_n_per_m);
-        let k2 = T::from_per_lane(loads, |l| l.stiffness_derivative_n_per_m2);
+        let q = loads.load_n;
+        let k = loads.stiffness_n_per_m;
+        let k2 = loads.stiffness_derivative_n_per_m2;
         let c = T::splat;
         let fit = q.gt(c(FIT_MIN_N)) & k.gt(c(0.0));
         // Finite whatever the slices gave; where `fit` fails the fallback replaces the result.
@@ -384,7 +407,7 @@ impl<T: Real> Newton<T> {
 pub(crate) struct Prepared<T: Real = f32> {
     geometric_approach_m: T,
     approach1: T,
-    r1: T::PerLane<RollerLoad>,
+    r1: RollerLoads<T>,
     law: PowerLaw<T>,
     /// The film–load equation on `law`, to be iterated [`NEWTON_ITERATIONS`] times.
     pub newton: Newton<T>,
@@ -394,13 +417,12 @@ pub(crate) struct Prepared<T: Real = f32> {
 /// plus the film the roller's memory predicts there. The film changes little from step to
 /// step (EHL: ∝ Q^−0.1), and what it does change moves the approach by a fraction of the
 /// film; the change is predicted to first order from its sensitivity at the last step.
+/// Of one roller, or of the rollers in the lanes of `T`.
 #[inline(always)]
-pub(crate) fn predicted_approach(geometric_approach_m: f32, memory: &RollerMemory) -> f32 {
-    let predicted_film = max(
-        memory.film_m
-            + memory.film_sensitivity * (geometric_approach_m - memory.geometric_approach_m),
-        0.0,
-    );
+pub(crate) fn predicted_approach<T: Real>(geometric_approach_m: T, memory: &RollerMemory<T>) -> T {
+    let predicted_film = (memory.film_m
+        + memory.film_sensitivity * (geometric_approach_m - memory.geometric_approach_m))
+        .max(T::splat(0.0));
     geometric_approach_m + predicted_film
 }
 
@@ -417,7 +439,7 @@ pub(crate) fn prepare_roller<const S: usize>(
 ) -> Prepared {
     let approach1 = predicted_approach(geometric_approach_m, memory);
     prepare_sliced::<f32>(
-        roller.evaluate(approach1, tilt_rad),
+        RollerLoads::from_lanes(&roller.evaluate(approach1, tilt_rad)),
         approach1,
         geometric_approach_m,
         memory,
@@ -428,10 +450,10 @@ pub(crate) fn prepare_roller<const S: usize>(
 /// roller or of the rollers in the lanes of `T` (the host prepares four at once).
 #[inline(always)]
 pub(crate) fn prepare_sliced<T: Real>(
-    r1: T::PerLane<RollerLoad>,
+    r1: RollerLoads<T>,
     approach1: T,
     geometric_approach_m: T,
-    memory: &T::PerLane<RollerMemory>,
+    memory: &RollerMemory<T>,
 ) -> Prepared<T> {
     // A whole-roller power law through the slices there (matching load, stiffness and
     // curvature: its error is third order in the approach's step from `approach1`), and the
@@ -439,16 +461,11 @@ pub(crate) fn prepare_sliced<T: Real>(
     // Where the slices carry nothing at `approach1` (a light roller whose film was
     // over-predicted), the last step's law stands in (before the first step, the cold
     // memory's).
-    let last_law = PowerLaw::from_lanes(&T::map_items(memory, |m| m.law));
-    let law1 = PowerLaw::fit(&r1, approach1, &last_law);
+    let law1 = PowerLaw::fit(&r1, approach1, &memory.law);
     // From the slices' load where they carry one, else from the last step's; before the first
     // step a little above it.
-    let carried = T::from_per_lane(&r1, |l| l.load_n).gt(T::splat(FIT_MIN_N));
-    let start = T::select(
-        carried,
-        law1.ln_load_ref,
-        T::from_per_lane(memory, |m| m.ln_load),
-    ) + T::from_per_lane(memory, |m| m.start_offset);
+    let carried = r1.load_n.gt(T::splat(FIT_MIN_N));
+    let start = T::select(carried, law1.ln_load_ref, memory.ln_load) + memory.start_offset;
     Prepared {
         geometric_approach_m,
         approach1,
@@ -462,7 +479,7 @@ pub(crate) fn prepare_sliced<T: Real>(
 /// of `T`: [`CoupledRoller`] but the regimes.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Finished<T: Real> {
-    load: T::PerLane<RollerLoad>,
+    load: RollerLoads<T>,
     approach_m: T,
     ln_load: T,
     films: [(T, T); 2],
@@ -475,7 +492,7 @@ impl<T: Real> Finished<T> {
     pub(crate) fn roller(&self, i: usize, regime_axes: &[RegimeAxis; 2]) -> CoupledRoller {
         let ln_load = self.ln_load.lane(i);
         CoupledRoller {
-            load: T::item(&self.load, i),
+            load: self.load.lane(i),
             approach_m: self.approach_m.lane(i),
             ln_load,
             films: self.films.map(|(c, m)| (c.lane(i), m.lane(i))),
@@ -503,7 +520,7 @@ pub(crate) fn finish_roller(
 pub(crate) fn finish_lanes<T: Real>(
     prepared: &Prepared<T>,
     films: &StepFilms<'_>,
-    memory: &mut T::PerLane<RollerMemory>,
+    memory: &mut RollerMemory<T>,
 ) -> Finished<T> {
     let Prepared {
         geometric_approach_m,
@@ -519,26 +536,24 @@ pub(crate) fn finish_lanes<T: Real>(
     // At the root, Q = e^λ is the law's load at `approach_m`; a roller whose approach stays
     // short of the law's offset (no film, separated) carries nothing.
     let carried = T::select(approach_m.gt(law1.offset_m), load_n, T::splat(0.0));
-    let moment_nm = T::from_per_lane(&r1, |l| l.moment_nm)
-        + T::from_per_lane(&r1, |l| l.stiffness_moment_n) * (approach_m - approach1);
-    let load = T::build(|i| RollerLoad {
-        load_n: carried.lane(i),
-        moment_nm: moment_nm.lane(i),
-        ..T::item(&r1, i)
-    });
+    let load = RollerLoads {
+        load_n: carried,
+        moment_nm: r1.moment_nm + r1.stiffness_moment_n * (approach_m - approach1),
+        ..r1
+    };
     // At the root, dE/dλ·dλ = dδ_geo + dH/dλ·dλ: dH/dδ_geo = H'/(E' − H').
     let film_slope_m = solved2.last.slope_m;
     let film_sensitivity =
         film_slope_m / (solved2.elastic_slope_m - film_slope_m).max(T::splat(1.0e-30));
     let film_sensitivity = film_sensitivity.max(T::splat(-1.0)).min(T::splat(0.0));
-    *memory = T::build(|i| RollerMemory {
-        ln_load: ln_load.lane(i),
-        film_m: solved2.film_m.lane(i),
-        geometric_approach_m: geometric_approach_m.lane(i),
-        film_sensitivity: film_sensitivity.lane(i),
-        law: law1.lane(i),
-        start_offset: 0.0,
-    });
+    *memory = RollerMemory {
+        ln_load,
+        film_m: solved2.film_m,
+        geometric_approach_m,
+        film_sensitivity,
+        law: law1,
+        start_offset: T::splat(0.0),
+    };
 
     Finished {
         load,
@@ -615,10 +630,10 @@ mod tests {
         }
     }
 
-    /// The host's lanes run the rest of a roller's solve after its slice pass — power-law
-    /// fit, Newton steps, finish and memory update (`prepare_sliced`, `iterate`, `finish_lanes`
-    /// on `F32x4`) — exactly as the M4 runs one roller alone (the same functions on `f32`,
-    /// `finish_roller`): 16 crowned hub-bearing rollers from separated (−13.5 µm) to heavily
+    /// The host's lanes run a roller's solve — predicted approach, slice pass, power-law fit,
+    /// Newton steps, finish and memory update (`predicted_approach`, `evaluate_lanes`,
+    /// `prepare_sliced`, `iterate`, `finish_lanes` on `F32x4`) — exactly as the M4 runs one
+    /// roller alone (`prepare_roller`, `iterate`, `finish_roller`): 16 crowned hub-bearing rollers from separated (−13.5 µm) to heavily
     /// loaded (+9 µm), tilted both ways, first from a cold memory, then twice from the warm
     /// memory of the step before with the geometric approach moved by ±0.4 µm (light
     /// rollers then see an over-predicted film: the slices carry nothing and the last law
@@ -720,27 +735,22 @@ mod tests {
                 .enumerate()
             {
                 let places: [(f32, f32); 4] = core::array::from_fn(|i| place(4 * g + i));
-                let mut group: [RollerMemory; 4] = core::array::from_fn(|i| memories[i]);
-                let approach1: [f32; 4] =
-                    core::array::from_fn(|i| predicted_approach(places[i].0, &group[i]));
-                let r1 = core::array::from_fn(|i| roller.evaluate(approach1[i], places[i].1));
-                let mut p = prepare_sliced::<F32x4>(
-                    r1,
-                    F32x4::from_array(approach1),
-                    F32x4::from_array(places.map(|p| p.0)),
-                    &group,
-                );
+                let mut group = RollerMemory::<F32x4>::gather(memories);
+                let geometric = F32x4::from_array(places.map(|p| p.0));
+                let approach1 = predicted_approach(geometric, &group);
+                let r1 = roller.evaluate_lanes(approach1.to_array(), places.map(|p| p.1));
+                let mut p = prepare_sliced(r1, approach1, geometric, &group);
                 for _ in 0..NEWTON_ITERATIONS {
                     p.newton.iterate(&films);
                 }
                 let finished = finish_lanes(&p, &films, &mut group);
-                for (i, one) in expected.iter().enumerate() {
+                for (i, (one, memory)) in expected.iter().zip(memories.iter_mut()).enumerate() {
                     let from_lanes = finished.roller(i, &axes);
                     assert_eq!(roller_bits(&from_lanes), roller_bits(one), "{step} {g} {i}");
                     assert_eq!(from_lanes.regimes, one.regimes);
-                    assert_eq!(memory_bits(&group[i]), memory_bits(&alone[4 * g + i]));
+                    *memory = group.lane(i);
+                    assert_eq!(memory_bits(memory), memory_bits(&alone[4 * g + i]));
                 }
-                memories.copy_from_slice(&group);
             }
         }
         // Both kinds were met: carrying rollers, and separated ones.

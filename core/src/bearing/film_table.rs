@@ -204,10 +204,28 @@ impl<T: Real> Cell<T> {
     /// Value and d/dλ of the linear interpolant of `nodes`.
     #[inline(always)]
     fn interpolate(&self, nodes: &[f32; TABLE_NODES]) -> (T, T) {
-        let a = T::from_per_lane(&self.index, |&i| nodes.get(i).copied().unwrap_or(0.0));
-        let b = T::from_per_lane(&self.index, |&i| nodes.get(i + 1).copied().unwrap_or(0.0));
+        // The index is at most TABLE_NODES − 2 by construction (`at`); held there again so
+        // that the compiler sees both look-ups in bounds and drops their checks and branches.
+        let node = |i: usize, next: usize| {
+            nodes
+                .get(min_index(i, TABLE_NODES - 2) + next)
+                .copied()
+                .unwrap_or(0.0)
+        };
+        let a = T::from_per_lane(&self.index, |&i| node(i, 0));
+        let b = T::from_per_lane(&self.index, |&i| node(i, 1));
         let d = b - a;
         (a + self.fraction * d, d * self.slope_scale)
+    }
+}
+
+/// The smaller of two indices (`Ord::min` without its generic call).
+#[inline(always)]
+fn min_index(a: usize, b: usize) -> usize {
+    if a < b {
+        a
+    } else {
+        b
     }
 }
 
@@ -309,8 +327,9 @@ impl StepFilms<'_> {
     /// √(e² + h_RI²), summed. The lanes run the same operations in the same order as one
     /// roller (the same bits); only the table look-ups go lane by lane. Inlined into the
     /// host's lanes (a call would pass the lanes through memory); a call on the M4, whose
-    /// registers the inlined sum would overflow into the stack (+400 instructions per step).
-    #[cfg_attr(target_arch = "arm", inline)]
+    /// registers the inlined sum would overflow into the stack (+400 instructions per step;
+    /// `inline(never)`: with the bounds checks gone LLVM would inline it).
+    #[cfg_attr(target_arch = "arm", inline(never))]
     #[cfg_attr(not(target_arch = "arm"), inline(always))]
     pub(crate) fn sum_at<T: Real>(&self, ln_load: T) -> FilmSums<T> {
         // λ is bracketed by the scalar solve: in range.

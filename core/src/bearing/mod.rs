@@ -20,7 +20,7 @@ pub use output::{BearingOutput, RollerOutput, StepStatus};
 use crate::contact::{ContactLaw, SlicedRoller};
 use crate::error::{in_range, Allowed, ParamError};
 use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis, ServedLoads};
-use crate::lanes::F32x4;
+use crate::lanes::{F32x4, Real};
 use crate::math::{ln, select, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use core::f32::consts::PI;
@@ -342,50 +342,37 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         // compares whole traces).
         let mut coupled = [CoupledRoller::default(); Z];
         if LOCKSTEP {
-            // The slice passes of all rollers together, in SIMD lanes.
-            let mut approach1 = [0.0f32; Z];
-            let mut tilt = [0.0f32; Z];
-            for (((a, t), place), memory) in approach1
-                .iter_mut()
-                .zip(tilt.iter_mut())
-                .zip(places.iter())
-                .zip(self.memory.iter())
-            {
-                *a = predicted_approach(place.geometric_m, memory);
-                *t = place.tilt_rad;
-            }
-            let mut sliced = [crate::contact::RollerLoad::default(); Z];
-            self.roller.evaluate_many(&approach1, &tilt, &mut sliced);
-            // The rest of each roller's solve four rollers at a time in SIMD lanes: the power
-            // law, the Newton steps and the finish, the lanes passed from one stage to the
-            // next in registers. (A short last group fills its idle lanes with copies of its
-            // last roller, whose results are discarded.)
-            for ((((out, memory), places), approach1), sliced) in coupled
+            // Four rollers at a time in SIMD lanes, from the predicted approach to the memory
+            // for the next step: the slice pass, the power law, the Newton steps and the
+            // finish, the lanes passed from one stage to the next in registers. (A short last
+            // group fills its idle lanes with copies of its last roller, whose results are
+            // discarded.)
+            for ((out, memory), places) in coupled
                 .chunks_mut(4)
                 .zip(self.memory.chunks_mut(4))
                 .zip(places.chunks(4))
-                .zip(approach1.chunks(4))
-                .zip(sliced.chunks(4))
             {
-                let mut memories = lanes_of(memory);
-                let geometric = F32x4::from_array(lanes_of(places).map(|p| p.geometric_m));
-                let mut p = prepare_sliced(
-                    lanes_of(sliced),
-                    F32x4::from_array(lanes_of(approach1)),
-                    geometric,
-                    &memories,
-                );
+                let mut memories = RollerMemory::<F32x4>::gather(memory);
+                let geometric = F32x4::gather(places, |p| p.geometric_m);
+                let approach1 = predicted_approach(geometric, &memories);
+                let tilt = F32x4::gather(places, |p| p.tilt_rad);
+                let sliced = self
+                    .roller
+                    .evaluate_lanes(approach1.to_array(), tilt.to_array());
+                let mut p = prepare_sliced(sliced, approach1, geometric, &memories);
                 for _ in 0..NEWTON_ITERATIONS {
                     p.newton.iterate(&films);
                 }
                 let finished = finish_lanes(&p, &films, &mut memories);
-                for (i, ((o, m), new)) in out
+                // Each lane taken apart once, at a lane index known to the compiler.
+                let rollers = F32x4::build(|i| finished.roller(i, &regime_axes));
+                let memories = F32x4::build(|i| memories.lane(i));
+                for ((o, m), (roller, new)) in out
                     .iter_mut()
                     .zip(memory.iter_mut())
-                    .zip(memories.iter())
-                    .enumerate()
+                    .zip(rollers.iter().zip(memories.iter()))
                 {
-                    *o = finished.roller(i, &regime_axes);
+                    *o = *roller;
                     *m = *new;
                 }
             }
@@ -510,13 +497,6 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
 /// lanes, four at a time (hosts), or each roller in turn (bare-metal ARM: the in-order
 /// Cortex-M).
 const LOCKSTEP: bool = !cfg!(all(target_arch = "arm", target_os = "none"));
-
-/// The four lanes of a group of rollers' items: a short group's idle lanes repeat its last
-/// item (realistic numbers, whose results are discarded).
-#[inline(always)]
-fn lanes_of<U: Copy + Default>(group: &[U]) -> [U; 4] {
-    core::array::from_fn(|i| group.get(i).or(group.last()).copied().unwrap_or_default())
-}
 
 /// A roller's direction (cos, sin of θ_j), geometric approach (m) and tilt (rad) at a step.
 #[derive(Clone, Copy, Debug, Default)]
