@@ -10,6 +10,7 @@
 mod coupling;
 mod equilibrium;
 mod film_table;
+mod lockstep;
 mod output;
 
 pub use coupling::NEWTON_ITERATIONS;
@@ -20,14 +21,10 @@ pub use output::{BearingOutput, RollerOutput, StepStatus};
 use crate::contact::{ContactLaw, SlicedRoller};
 use crate::error::{in_range, Allowed, ParamError};
 use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis, ServedLoads};
-use crate::lanes::{F32x4, Real};
 use crate::math::{ln, select, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use core::f32::consts::PI;
-use coupling::{
-    finish_lanes, finish_roller, predicted_approach, prepare_roller, prepare_sliced,
-    ContactContext, CoupledRoller, RollerMemory,
-};
+use coupling::{finish_roller, prepare_roller, ContactContext, CoupledRoller, RollerMemory};
 use film_table::FilmTable;
 use output::StiffnessSums;
 
@@ -332,50 +329,22 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         };
         let places = parts.places(state);
         // Each roller: its slice pass and power law (`prepare_roller`), NEWTON_ITERATIONS
-        // Newton steps, its outputs (`finish_roller`). A superscalar host runs the slice passes
-        // and the Newton steps of four rollers at a time in SIMD lanes (`crate::lanes`): each
-        // Newton step is a chain of dependent operations whose latency the core cannot hide
+        // Newton steps, its outputs (`finish_roller`). A superscalar host runs all of that
+        // for four rollers at a time in SIMD lanes, two groups of four in flight (`lockstep`):
+        // each stage is a chain of dependent operations whose latency the core cannot hide
         // one roller after another. The in-order M4 gains nothing from lanes and would pay
         // ≈ 4 k instructions of loads and stores for the staged state, so it runs the rollers
         // one after another. The operations of each roller are the same either way, so are
-        // the results, bit for bit (tests in `lanes`, `coupling` and `slicing`; `hil-sim qemu`
-        // compares whole traces).
+        // the results, bit for bit (tests in `lanes`, `coupling`, `slicing` and `lockstep`;
+        // `hil-sim qemu` compares whole traces).
         let mut coupled = [CoupledRoller::default(); Z];
         if LOCKSTEP {
-            // Four rollers at a time in SIMD lanes, from the predicted approach to the memory
-            // for the next step: the slice pass, the power law, the Newton steps and the
-            // finish, the lanes passed from one stage to the next in registers. (A short last
-            // group fills its idle lanes with copies of its last roller, whose results are
-            // discarded.)
-            for ((out, memory), places) in coupled
-                .chunks_mut(4)
-                .zip(self.memory.chunks_mut(4))
-                .zip(places.chunks(4))
-            {
-                let mut memories = RollerMemory::<F32x4>::gather(memory);
-                let geometric = F32x4::gather(places, |p| p.geometric_m);
-                let approach1 = predicted_approach(geometric, &memories);
-                let tilt = F32x4::gather(places, |p| p.tilt_rad);
-                let sliced = self
-                    .roller
-                    .evaluate_lanes(approach1.to_array(), tilt.to_array());
-                let mut p = prepare_sliced(sliced, approach1, geometric, &memories);
-                for _ in 0..NEWTON_ITERATIONS {
-                    p.newton.iterate(&films);
-                }
-                let finished = finish_lanes(&p, &films, &mut memories);
-                // Each lane taken apart once, at a lane index known to the compiler.
-                let rollers = F32x4::build(|i| finished.roller(i, &regime_axes));
-                let memories = F32x4::build(|i| memories.lane(i));
-                for ((o, m), (roller, new)) in out
-                    .iter_mut()
-                    .zip(memory.iter_mut())
-                    .zip(rollers.iter().zip(memories.iter()))
-                {
-                    *o = *roller;
-                    *m = *new;
-                }
+            lockstep::Lockstep {
+                roller: &self.roller,
+                films: &films,
+                regime_axes: &regime_axes,
             }
+            .solve(&places, &mut self.memory, &mut coupled);
         }
         parts.assemble(
             &mut self.memory,
