@@ -251,9 +251,10 @@ struct Solved<T: Real> {
 /// accurate, and free).
 ///
 /// The iteration state of the rollers in the lanes of `T`: `Newton<f32>` is one roller's
-/// (the Cortex-M4 iterates one roller at a time: lanes gain nothing in order). A host gathers
-/// the rollers' states four at a time into `Newton<F32x4>` ([`Newton::from_lanes`]) and
-/// iterates them as SIMD lanes. Each lane runs the operations of one roller in the same order
+/// (the Cortex-M4 iterates one roller at a time: lanes gain nothing in order). A host builds
+/// the states of four rollers at a time as `Newton<F32x4>`, straight from their power laws in
+/// lanes (`prepare_sliced`, `super::lockstep`), and iterates them as SIMD lanes. Each lane
+/// runs the operations of one roller in the same order
 /// (`crate::lanes`), so the results are the same bit for bit. (An iteration is a chain of
 /// dependent operations — two exponentials, two roots, three divisions — whose latency a
 /// superscalar core cannot hide by overlapping the rollers one after another.)

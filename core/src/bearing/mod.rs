@@ -462,9 +462,8 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     }
 }
 
-/// Whether the lubricated step runs the slice passes and Newton steps of the rollers in SIMD
-/// lanes, four at a time (hosts), or each roller in turn (bare-metal ARM: the in-order
-/// Cortex-M).
+/// Whether the lubricated step solves the rollers in SIMD lanes, four at a time (hosts:
+/// `lockstep`), or each roller in turn (bare-metal ARM: the in-order Cortex-M).
 const LOCKSTEP: bool = !cfg!(all(target_arch = "arm", target_os = "none"));
 
 /// A roller's direction (cos, sin of θ_j), geometric approach (m) and tilt (rad) at a step.

@@ -183,7 +183,7 @@ impl<const S: usize> SlicedRoller<S> {
 
     /// [`SlicedRoller::evaluate`] for `Z` rollers of this shape: `out[j]` is the load at
     /// `approach_m[j]` and `tilt_rad[j]`, bit for bit. Runs `LANES` rollers side by side
-    /// ([`SlicedRoller::evaluate_lanes`]).
+    /// (`SlicedRoller::evaluate_lanes`, the host step's pass).
     pub fn evaluate_many<const Z: usize>(
         &self,
         approach_m: &[f32; Z],
