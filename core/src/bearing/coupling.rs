@@ -66,8 +66,12 @@ pub(crate) struct CoupledRoller {
     pub ln_load: f32,
     /// (central, minimum) film of the inner and outer contact (m).
     pub films: [(f32, f32); 2],
-    /// dH/dQ of the film sum at the solution (m/N, ≤ 0).
-    pub film_slope_m_per_n: f32,
+    /// 1/(1 − K·dH/dQ) ≥ 1, with dH/dQ of the film sum at the solution (≤ 0): the factor by
+    /// which the film softens the roller's stiffness.
+    pub softening: f32,
+    /// The film coupling factor of the stiffness, dH/dQ/(1 − K·dH/dQ) (m/N, ≤ 0; see
+    /// `StiffnessSums`).
+    pub film_coupling_m_per_n: f32,
     pub regimes: [Regime; 2],
 }
 
@@ -484,7 +488,8 @@ pub(crate) struct Finished<T: Real> {
     approach_m: T,
     ln_load: T,
     films: [(T, T); 2],
-    film_slope_m_per_n: T,
+    softening: T,
+    film_coupling_m_per_n: T,
 }
 
 impl<T: Real> Finished<T> {
@@ -497,7 +502,8 @@ impl<T: Real> Finished<T> {
             approach_m: self.approach_m.lane(i),
             ln_load,
             films: self.films.map(|(c, m)| (c.lane(i), m.lane(i))),
-            film_slope_m_per_n: self.film_slope_m_per_n.lane(i),
+            softening: self.softening.lane(i),
+            film_coupling_m_per_n: self.film_coupling_m_per_n.lane(i),
             regimes: regime_axes.map(|axis| axis.at(ln_load)),
         }
     }
@@ -556,12 +562,17 @@ pub(crate) fn finish_lanes<T: Real>(
         start_offset: T::splat(0.0),
     };
 
+    // dH/dQ, and 1/(1 − K·dH/dQ) ≥ 1 (dH/dQ ≤ 0): film coupling and roller stiffness share
+    // it.
+    let film_slope_m_per_n = film_slope_m / load_n;
+    let softening = T::splat(1.0) / (T::splat(1.0) - load.stiffness_n_per_m * film_slope_m_per_n);
     Finished {
         load,
         approach_m,
         ln_load,
         films: films.contacts_from(&solved2.last, solved2.film_m),
-        film_slope_m_per_n: film_slope_m / load_n,
+        softening,
+        film_coupling_m_per_n: film_slope_m_per_n * softening,
     }
 }
 

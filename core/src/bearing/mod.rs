@@ -370,10 +370,6 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                     crate::math::max(span.1, crate::math::select(loaded, r.ln_load, f32::MIN)),
                 );
                 let [(central_in, min_in), (central_out, min_out)] = r.films;
-                let s0 = r.load.stiffness_n_per_m;
-                // 1/(1 − K·dH/dQ) ≥ 1 (dH/dQ ≤ 0): film coupling and roller stiffness share it.
-                let softening = 1.0 / (1.0 - s0 * r.film_slope_m_per_n);
-                let coupling = r.film_slope_m_per_n * softening;
                 // Films are finite: hidden at standstill by a factor 0 or 1.
                 let shown = |h: f32| h * film_shown;
                 // A table, not an `if`: the work must not depend on the speed.
@@ -389,14 +385,14 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                     central_film_out_m: shown(central_out),
                     min_film_in_m: shown(min_in),
                     min_film_out_m: shown(min_out),
-                    roller_stiffness_n_per_m: s0 * softening,
+                    roller_stiffness_n_per_m: r.load.stiffness_n_per_m * r.softening,
                     regime_in: shown_regime(r.regimes[0]),
                     regime_out: shown_regime(r.regimes[1]),
                     film_source_in: served[0].source_at(r.ln_load),
                     film_source_out: served[1].source_at(r.ln_load),
                     ..RollerOutput::ZERO
                 };
-                (r.load, roller, coupling)
+                (r.load, roller, r.film_coupling_m_per_n)
             },
         );
         // The loads the next step renews the table at first; unchanged when nothing is loaded.
