@@ -17,7 +17,7 @@ use super::coupling::{
 };
 use super::film_table::StepFilms;
 use super::Place;
-use crate::contact::SlicedRoller;
+use crate::contact::{RollerLoads, SlicedRoller};
 use crate::film::RegimeAxis;
 use crate::lanes::{F32x4, Real};
 
@@ -67,19 +67,31 @@ impl<const S: usize> Lockstep<'_, S> {
         let mut memories: [RollerMemory<F32x4>; N] = core::array::from_fn(|k| {
             RollerMemory::gather(memory.get(group(k)..).unwrap_or_default())
         });
-        let mut prepared: [Prepared<F32x4>; N] = core::array::from_fn(|k| {
+        // The slice passes of the groups first (throughput-bound), then their power laws
+        // (latency-bound chains, overlapped).
+        let sliced: [(RollerLoads<F32x4>, F32x4, F32x4); N] = core::array::from_fn(|k| {
             let places = places.get(group(k)..).unwrap_or_default();
+            let geometric = F32x4::gather(places, |p| p.geometric_m);
+            let tilt = F32x4::gather(places, |p| p.tilt_rad);
+            let approach1 = memories
+                .get(k)
+                .map_or(geometric, |m| predicted_approach(geometric, m));
+            let loads = self
+                .roller
+                .evaluate_lanes(approach1.to_array(), tilt.to_array());
+            (loads, approach1, geometric)
+        });
+        let mut prepared: [Prepared<F32x4>; N] = core::array::from_fn(|k| {
             let memory = memories
                 .get(k)
                 .copied()
                 .unwrap_or(RollerMemory::gather(&[]));
-            let geometric = F32x4::gather(places, |p| p.geometric_m);
-            let tilt = F32x4::gather(places, |p| p.tilt_rad);
-            let approach1 = predicted_approach(geometric, &memory);
-            let sliced = self
-                .roller
-                .evaluate_lanes(approach1.to_array(), tilt.to_array());
-            prepare_sliced(sliced, approach1, geometric, &memory)
+            let (loads, approach1, geometric) = sliced.get(k).copied().unwrap_or((
+                RollerLoads::zero(),
+                memory.ln_load,
+                memory.ln_load,
+            ));
+            prepare_sliced(loads, approach1, geometric, &memory)
         });
         for _ in 0..NEWTON_ITERATIONS {
             for p in prepared.iter_mut() {
