@@ -88,8 +88,8 @@ impl<const S: usize> Lockstep<'_, S> {
                 .unwrap_or(RollerMemory::gather(&[]));
             let (loads, approach1, geometric) = sliced.get(k).copied().unwrap_or((
                 RollerLoads::zero(),
-                memory.ln_load,
-                memory.ln_load,
+                F32x4::splat(0.0),
+                F32x4::splat(0.0),
             ));
             prepare_sliced(loads, approach1, geometric, &memory)
         });
