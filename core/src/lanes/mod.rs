@@ -250,9 +250,13 @@ impl Real for F32x4 {
     #[inline(always)]
     fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
         items: &[U; 4],
-        f: impl FnMut(&U) -> f32,
+        mut f: impl FnMut(&U) -> f32,
     ) -> Self {
-        Self::from_array(items.each_ref().map(f))
+        // Spelled out, here and below: `array::map` and `array::from_fn` go through closures
+        // that a build in several codegen units (the workspace's release profile) may leave
+        // as calls, passing the lanes through memory (+0.7 µs on the host step).
+        let [a, b, c, d] = items;
+        Self::from_array([f(a), f(b), f(c), f(d)])
     }
     #[inline(always)]
     fn lane(self, i: usize) -> f32 {
@@ -265,13 +269,16 @@ impl Real for F32x4 {
     }
     #[inline(always)]
     fn build<U: Copy + Default + core::fmt::Debug>(f: impl FnMut(usize) -> U) -> [U; 4] {
-        core::array::from_fn(f)
+        let mut f = f;
+        let a = f(0);
+        let b = f(1);
+        let c = f(2);
+        [a, b, c, f(3)]
     }
     #[inline(always)]
     fn gather<U>(items: &[U], f: impl Fn(&U) -> f32) -> Self {
-        Self::from_array(core::array::from_fn(|i| {
-            items.get(i).or(items.last()).map_or(0.0, &f)
-        }))
+        let lane = |i: usize| items.get(i).or(items.last()).map_or(0.0, &f);
+        Self::from_array([lane(0), lane(1), lane(2), lane(3)])
     }
 }
 

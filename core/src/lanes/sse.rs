@@ -110,7 +110,11 @@ pub(super) fn truncate_index(a: F32x4) -> ([usize; 4], F32x4) {
         let index = _mm_cvttps_epi32(a.0);
         // SAFETY (`transmute`): `__m128i` and `[i32; 4]` are both 16 bytes of four i32.
         let lanes = core::mem::transmute::<__m128i, [i32; 4]>(index);
-        (lanes.map(|i| i as usize), F32x4(_mm_cvtepi32_ps(index)))
+        let [a, b, c, d] = lanes;
+        (
+            [a as usize, b as usize, c as usize, d as usize],
+            F32x4(_mm_cvtepi32_ps(index)),
+        )
     }
 }
 #[inline(always)]
