@@ -497,17 +497,14 @@ impl<T: Real> Finished<T> {
     #[inline(always)]
     pub(crate) fn roller(&self, i: usize, regime_axes: &[RegimeAxis; 2]) -> CoupledRoller {
         let ln_load = self.ln_load.lane(i);
-        // Spelled out, not `array::map` (see `Real::from_per_lane` for `F32x4`).
-        let [(c_in, m_in), (c_out, m_out)] = self.films;
-        let [axis_in, axis_out] = regime_axes;
         CoupledRoller {
             load: self.load.lane(i),
             approach_m: self.approach_m.lane(i),
             ln_load,
-            films: [(c_in.lane(i), m_in.lane(i)), (c_out.lane(i), m_out.lane(i))],
+            films: self.films.map(|(c, m)| (c.lane(i), m.lane(i))),
             softening: self.softening.lane(i),
             film_coupling_m_per_n: self.film_coupling_m_per_n.lane(i),
-            regimes: [axis_in.at(ln_load), axis_out.at(ln_load)],
+            regimes: regime_axes.map(|axis| axis.at(ln_load)),
         }
     }
 }

@@ -21,22 +21,6 @@ use crate::contact::{RollerLoads, SlicedRoller};
 use crate::film::RegimeAxis;
 use crate::lanes::{F32x4, Real};
 
-/// `[e(0), e(1), …, e(n − 1)]` for an expression `e(k)` of `k`, evaluated in order: what
-/// `array::from_fn` does, without its closure, which a build in several codegen units (the
-/// workspace's release profile) left as calls passing each group's state through memory
-/// (+0.7 µs on the host step). The expression is spelled twice: once to fill the array
-/// (k = 0), once to replace the other items.
-macro_rules! each {
-    ($n:expr, $k:ident => $e:expr) => {{
-        let $k = 0usize;
-        let mut items = [$e; $n];
-        for ($k, item) in items.iter_mut().enumerate().skip(1) {
-            *item = $e;
-        }
-        items
-    }};
-}
-
 /// Rollers in the lanes of one group.
 const LANES: usize = 4;
 
@@ -64,71 +48,103 @@ impl<const S: usize> Lockstep<'_, S> {
             .zip(places.chunks(2 * LANES))
         {
             if places.len() > LANES {
-                self.solve_groups::<2>(places, memory, out);
+                let (places_a, places_b) = places.split_at(LANES);
+                let (memory_a, memory_b) = memory.split_at_mut(LANES.min(memory.len()));
+                let (out_a, out_b) = out.split_at_mut(LANES.min(out.len()));
+                self.solve_pair([
+                    Group {
+                        places: places_a,
+                        memory: memory_a,
+                        out: out_a,
+                    },
+                    Group {
+                        places: places_b,
+                        memory: memory_b,
+                        out: out_b,
+                    },
+                ]);
             } else {
-                self.solve_groups::<1>(places, memory, out);
+                self.solve_one(Group {
+                    places,
+                    memory,
+                    out,
+                });
             }
         }
     }
 
-    /// `N` groups of [`LANES`] rollers (the last may be short), stage by stage.
+    /// Two groups, stage by stage. (Spelled out, without arrays of stages built by closures:
+    /// in a build of several codegen units — the workspace's release profile — those closures
+    /// stayed calls that passed the groups' state through memory.)
     #[inline(always)]
-    fn solve_groups<const N: usize>(
-        &self,
-        places: &[Place],
-        memory: &mut [RollerMemory],
-        out: &mut [CoupledRoller],
-    ) {
-        let group = |k: usize| k * LANES;
-        let mut memories: [RollerMemory<F32x4>; N] =
-            each!(N, k => RollerMemory::gather(memory.get(group(k)..).unwrap_or_default()));
-        // The slice passes of the groups first (throughput-bound), then their power laws
-        // (latency-bound chains, overlapped).
-        let sliced: [(RollerLoads<F32x4>, F32x4, F32x4); N] = each!(N, k => {
-            let places = places.get(group(k)..).unwrap_or_default();
-            let geometric = F32x4::gather(places, |p| p.geometric_m);
-            let tilt = F32x4::gather(places, |p| p.tilt_rad);
-            let approach1 = memories
-                .get(k)
-                .map_or(geometric, |m| predicted_approach(geometric, m));
-            let loads = self
-                .roller
-                .evaluate_lanes(approach1.to_array(), tilt.to_array());
-            (loads, approach1, geometric)
-        });
-        let mut prepared: [Prepared<F32x4>; N] = each!(N, k => {
-            let memory = memories
-                .get(k)
-                .copied()
-                .unwrap_or(RollerMemory::gather(&[]));
-            let (loads, approach1, geometric) = sliced.get(k).copied().unwrap_or((
-                RollerLoads::zero(),
-                F32x4::splat(0.0),
-                F32x4::splat(0.0),
-            ));
-            prepare_sliced(loads, approach1, geometric, &memory)
-        });
+    fn solve_pair(&self, [a, b]: [Group<'_>; 2]) {
+        let (mut memory_a, geometric_a, approach_a, loads_a) = self.slice(&a);
+        let (mut memory_b, geometric_b, approach_b, loads_b) = self.slice(&b);
+        let mut prepared_a = prepare_sliced(loads_a, approach_a, geometric_a, &memory_a);
+        let mut prepared_b = prepare_sliced(loads_b, approach_b, geometric_b, &memory_b);
         for _ in 0..NEWTON_ITERATIONS {
-            for p in prepared.iter_mut() {
-                p.newton.iterate(self.films);
-            }
+            prepared_a.newton.iterate(self.films);
+            prepared_b.newton.iterate(self.films);
         }
-        for (k, (p, memories)) in prepared.iter().zip(memories.iter_mut()).enumerate() {
-            let finished = finish_lanes(p, self.films, memories);
-            // Each lane taken apart once, at a lane index known to the compiler.
-            let rollers = F32x4::build(|i| finished.roller(i, self.regime_axes));
-            let new = F32x4::build(|i| memories.lane(i));
-            let slots = out
-                .get_mut(group(k)..)
-                .unwrap_or_default()
-                .iter_mut()
-                .zip(memory.get_mut(group(k)..).unwrap_or_default().iter_mut());
-            for ((o, m), (roller, new)) in slots.zip(rollers.iter().zip(new.iter())) {
-                *o = *roller;
-                *m = *new;
-            }
+        self.finish(&prepared_a, &mut memory_a, a);
+        self.finish(&prepared_b, &mut memory_b, b);
+    }
+
+    /// One group.
+    #[inline(always)]
+    fn solve_one(&self, group: Group<'_>) {
+        let (mut memory, geometric, approach1, loads) = self.slice(&group);
+        let mut prepared = prepare_sliced(loads, approach1, geometric, &memory);
+        for _ in 0..NEWTON_ITERATIONS {
+            prepared.newton.iterate(self.films);
+        }
+        self.finish(&prepared, &mut memory, group);
+    }
+
+    /// A group's warm start and geometric approach in lanes, its predicted approach and its
+    /// slice pass there.
+    #[inline(always)]
+    fn slice(&self, group: &Group<'_>) -> (RollerMemory<F32x4>, F32x4, F32x4, RollerLoads<F32x4>) {
+        let memory = RollerMemory::gather(group.memory);
+        let geometric = F32x4::gather(group.places, |p| p.geometric_m);
+        let tilt = F32x4::gather(group.places, |p| p.tilt_rad);
+        let approach1 = predicted_approach(geometric, &memory);
+        let loads = self
+            .roller
+            .evaluate_lanes(approach1.to_array(), tilt.to_array());
+        (memory, geometric, approach1, loads)
+    }
+
+    /// A group's finish: its rollers' results and new warm starts, each lane taken apart once,
+    /// at a lane index known to the compiler.
+    #[inline(always)]
+    fn finish(
+        &self,
+        prepared: &Prepared<F32x4>,
+        memories: &mut RollerMemory<F32x4>,
+        group: Group<'_>,
+    ) {
+        let finished = finish_lanes(prepared, self.films, memories);
+        let rollers = F32x4::build(|i| finished.roller(i, self.regime_axes));
+        let new = F32x4::build(|i| memories.lane(i));
+        for ((o, m), (roller, new)) in group
+            .out
+            .iter_mut()
+            .zip(group.memory.iter_mut())
+            .zip(rollers.iter().zip(new.iter()))
+        {
+            *o = *roller;
+            *m = *new;
         }
     }
+}
+
+/// Up to [`LANES`] rollers solved in the lanes of one register: where they are, their warm
+/// starts (updated) and their results.
+struct Group<'a> {
+    places: &'a [Place],
+    memory: &'a mut [RollerMemory],
+    out: &'a mut [CoupledRoller],
 }
 
 #[cfg(test)]

@@ -48,20 +48,6 @@ pub(crate) struct RollerLoads<T: Real> {
 }
 
 impl<T: Real> RollerLoads<T> {
-    /// No load.
-    #[inline(always)]
-    pub(crate) fn zero() -> Self {
-        let zero = T::splat(0.0);
-        Self {
-            load_n: zero,
-            moment_nm: zero,
-            stiffness_n_per_m: zero,
-            stiffness_moment_n: zero,
-            stiffness_tilt_nm: zero,
-            stiffness_derivative_n_per_m2: zero,
-        }
-    }
-
     /// The loads of single rollers side by side.
     #[inline(always)]
     pub(crate) fn from_lanes(loads: &T::PerLane<RollerLoad>) -> Self {
