@@ -84,17 +84,25 @@ pub fn log2(x: f32) -> f32 {
 
 /// [`log2`] of a positive normal finite `x`, without the clamp (a caller whose argument is
 /// bounded by construction saves its two compares; other inputs give finite nonsense).
+/// Of one number or of lanes ([`Real`]: the host's power-law fit takes four rollers' at once).
 #[inline(always)]
-pub(crate) fn log2_normal(x: f32) -> f32 {
+pub(crate) fn log2_normal<T: Real>(x: T) -> T {
+    let (m, e) = x.split_normal();
+    let t = m - T::splat(1.0);
+    e + t * horner(&LOG2_POLY, t)
+}
+
+/// A positive normal finite `x` as m·2ᵉ with m in [√½, √2) (so that the polynomial argument
+/// of [`log2_normal`] stays small): (m, e), e as a float. Read from the bit pattern.
+#[inline(always)]
+pub(crate) fn split_normal(x: f32) -> (f32, f32) {
     let bits = x.to_bits();
     let exponent = ((bits >> 23) & 0xff) as i32 - 127;
-    // Mantissa in [1, 2), re-centred to [√½, √2) so the polynomial argument stays small.
+    // Mantissa in [1, 2), re-centred to [√½, √2).
     let mantissa = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
     let high = mantissa > SQRT_2;
     let m = if high { mantissa * 0.5 } else { mantissa };
-    let e = (exponent + i32::from(high)) as f32;
-    let t = m - 1.0;
-    e + t * horner(&LOG2_POLY, t)
+    (m, (exponent + i32::from(high)) as f32)
 }
 
 /// Natural logarithm with the behaviour of [`log2`].
@@ -105,8 +113,8 @@ pub fn ln(x: f32) -> f32 {
 
 /// [`ln`] of a positive normal finite `x`, without the clamp (see [`log2_normal`]).
 #[inline(always)]
-pub(crate) fn ln_normal(x: f32) -> f32 {
-    log2_normal(x) * core::f32::consts::LN_2
+pub(crate) fn ln_normal<T: Real>(x: T) -> T {
+    log2_normal(x) * T::splat(core::f32::consts::LN_2)
 }
 
 /// 2ʸ. Arguments are clamped to `[-126, 127]`; NaN is treated as `-126`. Never returns NaN

@@ -23,11 +23,11 @@
 //! |Δh|/h ≤ 10⁻³ (tested against a converged f64 iteration over the PHYSICS.md §5.3 domain);
 //! larger jumps cost accuracy at the lightest loads for one step (see the test).
 
-use super::film_table::{FilmSum, FilmSums, StepFilms};
-use crate::contact::{RollerLoad, SlicedRoller};
+use super::film_table::{FilmSums, StepFilms};
+use crate::contact::{RollerLoad, RollerLoads, SlicedRoller};
 use crate::film::{ContactInput, Regime, RegimeAxis};
 use crate::lanes::Real;
-use crate::math::{exp2_in_range, exp_in_range, ln_normal, max, min, select};
+use crate::math::{exp2_in_range, exp_in_range, ln_normal};
 
 /// Safeguarded Newton steps of the scalar film–load equation per roller and step. Two suffice
 /// with the step of `Newton::iterate`: the warm start's accuracy test passes, and the shaft
@@ -57,7 +57,7 @@ pub(crate) struct ContactContext {
 }
 
 /// Result of the coupled solve for one roller.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct CoupledRoller {
     pub load: RollerLoad,
     /// Elastic approach at the roller middle (m).
@@ -66,29 +66,67 @@ pub(crate) struct CoupledRoller {
     pub ln_load: f32,
     /// (central, minimum) film of the inner and outer contact (m).
     pub films: [(f32, f32); 2],
-    /// dH/dQ of the film sum at the solution (m/N, ≤ 0).
-    pub film_slope_m_per_n: f32,
+    /// 1/(1 − K·dH/dQ) ≥ 1, with dH/dQ of the film sum at the solution (≤ 0): the factor by
+    /// which the film softens the roller's stiffness.
+    pub softening: f32,
+    /// The film coupling factor of the stiffness, dH/dQ/(1 − K·dH/dQ) (m/N, ≤ 0; see
+    /// `StiffnessSums`).
+    pub film_coupling_m_per_n: f32,
     pub regimes: [Regime; 2],
 }
 
-/// What a roller carries from one step to the next: the warm start.
+/// What a roller carries from one step to the next: the warm start. Of one roller, or of the
+/// rollers in the lanes of `T` (the host's lockstep stages).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct RollerMemory {
+pub(crate) struct RollerMemory<T: Real = f32> {
     /// ln Q at the last step.
-    pub ln_load: f32,
+    pub ln_load: T,
     /// Film sum H at the last step (m); 0 before the first.
-    pub film_m: f32,
+    pub film_m: T,
     /// Geometric approach at the last step (m).
-    pub geometric_approach_m: f32,
+    pub geometric_approach_m: T,
     /// dH/dδ_geo at the last step: how the film followed the geometric approach (−1 … 0).
-    pub film_sensitivity: f32,
+    pub film_sensitivity: T,
     /// The power law fitted to the slices at the last step; before the first step, a straight
     /// untilted roller's law from its first touching slice (`PowerLaw::untouched`).
-    pub law: PowerLaw,
+    pub law: PowerLaw<T>,
     /// Added to ln Q at the start of the solve: [`COLD_START_OFFSET`] before the first step
     /// (no film predicted, so the slices' load is the dry one, where the missing approach is
     /// zero), then 0.
-    pub start_offset: f32,
+    pub start_offset: T,
+}
+
+impl<T: Real> RollerMemory<T> {
+    /// The memories of a group of rollers in lanes (see [`Real::gather`]).
+    #[inline(always)]
+    pub(crate) fn gather(group: &[RollerMemory]) -> Self {
+        Self {
+            ln_load: T::gather(group, |m| m.ln_load),
+            film_m: T::gather(group, |m| m.film_m),
+            geometric_approach_m: T::gather(group, |m| m.geometric_approach_m),
+            film_sensitivity: T::gather(group, |m| m.film_sensitivity),
+            law: PowerLaw {
+                offset_m: T::gather(group, |m| m.law.offset_m),
+                ln_load_ref: T::gather(group, |m| m.law.ln_load_ref),
+                span_m: T::gather(group, |m| m.law.span_m),
+                exponent: T::gather(group, |m| m.law.exponent),
+            },
+            start_offset: T::gather(group, |m| m.start_offset),
+        }
+    }
+
+    /// The memory of the roller in lane `i`.
+    #[inline(always)]
+    pub(crate) fn lane(&self, i: usize) -> RollerMemory {
+        RollerMemory {
+            ln_load: self.ln_load.lane(i),
+            film_m: self.film_m.lane(i),
+            geometric_approach_m: self.geometric_approach_m.lane(i),
+            film_sensitivity: self.film_sensitivity.lane(i),
+            law: self.law.lane(i),
+            start_offset: self.start_offset.lane(i),
+        }
+    }
 }
 
 impl RollerMemory {
@@ -105,17 +143,18 @@ impl RollerMemory {
 /// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach, kept
 /// as the approach it passes through: Q = Q_ref·((δ − δ_off)/s)^n, so that the elastic
 /// approach at λ = ln Q is s·e^((λ − λ_ref)/n) — one exponential, and no logarithm beyond the
-/// fit's ln Q_ref.
+/// fit's ln Q_ref. Of one roller, or of the rollers in the lanes of `T` (the host fits four
+/// at once).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct PowerLaw {
+pub(crate) struct PowerLaw<T: Real = f32> {
     /// δ_off (m).
-    offset_m: f32,
+    offset_m: T,
     /// λ_ref = ln Q_ref of the point the law passes through.
-    ln_load_ref: f32,
+    ln_load_ref: T,
     /// s = δ_ref − δ_off at that point (m).
-    span_m: f32,
+    span_m: T,
     /// n.
-    exponent: f32,
+    exponent: T,
 }
 
 impl PowerLaw {
@@ -132,14 +171,28 @@ impl PowerLaw {
             exponent: 10.0 / 9.0,
         }
     }
+}
+
+impl<T: Real> PowerLaw<T> {
+    /// The law of lane `i`.
+    #[inline(always)]
+    fn lane(&self, i: usize) -> PowerLaw {
+        PowerLaw {
+            offset_m: self.offset_m.lane(i),
+            ln_load_ref: self.ln_load_ref.lane(i),
+            span_m: self.span_m.lane(i),
+            exponent: self.exponent.lane(i),
+        }
+    }
 
     /// `self` if `condition`, else `other`, field by field without a branch.
-    fn select(&self, condition: bool, other: &Self) -> Self {
+    #[inline(always)]
+    fn select(&self, condition: T::Mask, other: &Self) -> Self {
         Self {
-            offset_m: select(condition, self.offset_m, other.offset_m),
-            ln_load_ref: select(condition, self.ln_load_ref, other.ln_load_ref),
-            span_m: select(condition, self.span_m, other.span_m),
-            exponent: select(condition, self.exponent, other.exponent),
+            offset_m: T::select(condition, self.offset_m, other.offset_m),
+            ln_load_ref: T::select(condition, self.ln_load_ref, other.ln_load_ref),
+            span_m: T::select(condition, self.span_m, other.span_m),
+            exponent: T::select(condition, self.exponent, other.exponent),
         }
     }
 
@@ -147,41 +200,49 @@ impl PowerLaw {
     /// K'/K = (n − 1)/s give s = 1/(K/Q − K'/K), n = s·K/Q. Straight rollers under the
     /// Palmgren law give n = 10/9 exactly; crowned or tilted ones, whose loaded length grows
     /// with the approach, a larger n. An unloaded roller takes `untouched`.
+    /// Of one roller, or of the rollers in the lanes of `T`, with the loads `loads`.
     #[inline(always)]
-    fn fit(load: &RollerLoad, approach_m: f32, untouched: &Self) -> Self {
+    fn fit(loads: &RollerLoads<T>, approach_m: T, untouched: &Self) -> Self {
         // Both branches are computed and selected (see `math::select`): fixed work.
-        let q = load.load_n;
-        let k = load.stiffness_n_per_m;
-        let fit = (q > FIT_MIN_N) & (k > 0.0);
+        let q = loads.load_n;
+        let k = loads.stiffness_n_per_m;
+        let k2 = loads.stiffness_derivative_n_per_m2;
+        let c = T::splat;
+        let fit = q.gt(c(FIT_MIN_N)) & k.gt(c(0.0));
         // Finite whatever the slices gave; where `fit` fails the fallback replaces the result.
-        let rho1 = k / max(q, FIT_MIN_N);
-        let rho2 = load.stiffness_derivative_n_per_m2 / max(k, 1.0e-30);
-        let curvature_fit = rho1 - rho2 > 0.0;
-        let span_m = select(
+        let rho1 = k / q.max(c(FIT_MIN_N));
+        let rho2 = k2 / k.max(c(1.0e-30));
+        let curvature_fit = (rho1 - rho2).gt(c(0.0));
+        let span_m = T::select(
             curvature_fit,
-            1.0 / max(rho1 - rho2, 1.0e-30),
-            (10.0 / 9.0) / rho1,
+            c(1.0) / (rho1 - rho2).max(c(1.0e-30)),
+            c(10.0 / 9.0) / rho1,
         );
         let fitted = Self {
             offset_m: approach_m - span_m,
-            ln_load_ref: ln_normal(max(q, FIT_MIN_N)),
+            ln_load_ref: ln_normal(q.max(c(FIT_MIN_N))),
             span_m,
-            exponent: select(curvature_fit, min(max(span_m * rho1, 1.0), 4.0), 10.0 / 9.0),
+            exponent: T::select(
+                curvature_fit,
+                (span_m * rho1).max(c(1.0)).min(c(4.0)),
+                c(10.0 / 9.0),
+            ),
         };
         fitted.select(fit, untouched)
     }
 }
 
-/// Result of a scalar solve: λ = ln Q and the film sum there.
+/// Result of a scalar solve (of one roller, or of the rollers in the lanes of `T`): λ = ln Q
+/// and the film sum there.
 #[derive(Clone, Copy, Debug)]
-struct Solved {
-    ln_load: f32,
+struct Solved<T: Real> {
+    ln_load: T,
     /// H at λ (m), extrapolated linearly from the last evaluation.
-    film_m: f32,
+    film_m: T,
     /// The last evaluation of the film sum.
-    last: FilmSum,
+    last: FilmSums<T>,
     /// dδ/dλ of the elastic approach at the last evaluation (m).
-    elastic_slope_m: f32,
+    elastic_slope_m: T,
 }
 
 /// Solves δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by safeguarded Newton steps
@@ -194,9 +255,10 @@ struct Solved {
 /// accurate, and free).
 ///
 /// The iteration state of the rollers in the lanes of `T`: `Newton<f32>` is one roller's
-/// (the Cortex-M4 iterates one roller at a time: lanes gain nothing in order). A host gathers
-/// the rollers' states four at a time into `Newton<F32x4>` ([`Newton::from_lanes`]) and
-/// iterates them as SIMD lanes. Each lane runs the operations of one roller in the same order
+/// (the Cortex-M4 iterates one roller at a time: lanes gain nothing in order). A host builds
+/// the states of four rollers at a time as `Newton<F32x4>`, straight from their power laws in
+/// lanes (`prepare_sliced`, `super::lockstep`), and iterates them as SIMD lanes. Each lane
+/// runs the operations of one roller in the same order
 /// (`crate::lanes`), so the results are the same bit for bit. (An iteration is a chain of
 /// dependent operations — two exponentials, two roots, three divisions — whose latency a
 /// superscalar core cannot hide by overlapping the rollers one after another.)
@@ -221,52 +283,58 @@ impl Default for Newton {
     }
 }
 
-impl Newton {
+impl<T: Real> Newton<T> {
+    /// The equation on `law` at geometric approach δ_geo (m), from λ = `start` (or the
+    /// bracket's lower part if that is outside it).
     #[inline(always)]
-    fn new(law: &PowerLaw, geometric_approach_m: f32, start: f32) -> Self {
-        let (lo, hi) = (LN_LOAD_MIN, LN_LOAD_MAX);
+    fn new(law: &PowerLaw<T>, geometric_approach_m: T, start: T) -> Self {
+        let (lo, hi) = (T::splat(LN_LOAD_MIN), T::splat(LN_LOAD_MAX));
         Self::from_one(
             geometric_approach_m - law.offset_m,
             law.exponent,
             law.span_m,
             law.ln_load_ref,
-            select((start > lo) & (start < hi), start, lo + 0.5),
+            T::select(
+                start.gt(lo) & start.lt(hi),
+                start,
+                T::splat(LN_LOAD_MIN + 0.5),
+            ),
         )
     }
 
     /// A roller's state before its first step: the gap δ_geo − δ_off (m), the law's exponent
     /// n, span (m) and λ_ref, and the start λ.
     #[inline(always)]
-    fn from_one(gap: f32, exponent: f32, span_m: f32, ln_load_ref: f32, lam: f32) -> Self {
+    fn from_one(gap: T, exponent: T, span_m: T, ln_load_ref: T, lam: T) -> Self {
         Self {
             gap,
-            inverse_exponent: 1.0 / exponent,
-            inverse_exponent_log2: core::f32::consts::LOG2_E / exponent,
+            inverse_exponent: T::splat(1.0) / exponent,
+            inverse_exponent_log2: T::splat(core::f32::consts::LOG2_E) / exponent,
             span_m,
             ln_load_ref,
-            lo: LN_LOAD_MIN,
-            hi: LN_LOAD_MAX,
+            lo: T::splat(LN_LOAD_MIN),
+            hi: T::splat(LN_LOAD_MAX),
             lam,
-            last: (lam, FilmSum::default(), 0.0),
+            last: (lam, FilmSums::zero(), T::splat(0.0)),
         }
     }
 
     /// The root found so far.
-    fn solved(&self) -> Solved {
+    #[inline(always)]
+    fn solved(&self) -> Solved<T> {
         let (at, last, elastic_slope_m) = self.last;
         Solved {
             ln_load: self.lam,
-            film_m: max(last.total_m + last.slope_m * (self.lam - at), 0.0),
+            film_m: (last.total_m + last.slope_m * (self.lam - at)).max(T::splat(0.0)),
             last,
             elastic_slope_m,
         }
     }
-}
 
-impl<T: Real> Newton<T> {
     /// The states of single rollers fresh from `Newton::new`, side by side: their last
     /// evaluation is the start λ with an empty film sum, as `new` leaves it (so it is made
     /// here, not gathered).
+    #[cfg(test)]
     #[inline(always)]
     pub(crate) fn start_lanes(rollers: &T::PerLane<Newton>) -> Self {
         let field = |f: fn(&Newton) -> f32| T::from_per_lane(rollers, f);
@@ -280,16 +348,13 @@ impl<T: Real> Newton<T> {
             lo: field(|n| n.lo),
             hi: field(|n| n.hi),
             lam,
-            last: (
-                lam,
-                FilmSums::from_lanes(&T::map_items(rollers, |_| FilmSum::default())),
-                T::splat(0.0),
-            ),
+            last: (lam, FilmSums::zero(), T::splat(0.0)),
         }
     }
 
     /// Store what the iterations of lane `i` changed (bracket, λ, last evaluation) into the
     /// state of its roller; the law's constants there are the lane's already.
+    #[cfg(test)]
     #[inline(always)]
     pub(crate) fn store_lane(&self, i: usize, roller: &mut Newton) {
         roller.lo = self.lo.lane(i);
@@ -341,29 +406,28 @@ impl<T: Real> Newton<T> {
     }
 }
 
-/// What a roller's step has before its Newton iterations: the slices at the predicted
-/// approach and the power law fitted there.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Prepared {
-    geometric_approach_m: f32,
-    approach1: f32,
-    r1: RollerLoad,
-    law: PowerLaw,
+/// What a roller's step has before its Newton iterations (of one roller, or of the rollers
+/// in the lanes of `T`): the slices at the predicted approach and the power law fitted there.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Prepared<T: Real = f32> {
+    geometric_approach_m: T,
+    approach1: T,
+    r1: RollerLoads<T>,
+    law: PowerLaw<T>,
     /// The film–load equation on `law`, to be iterated [`NEWTON_ITERATIONS`] times.
-    pub newton: Newton,
+    pub newton: Newton<T>,
 }
 
 /// The approach at which a roller's one slice pass runs: the geometric approach `δ_geo` (m)
 /// plus the film the roller's memory predicts there. The film changes little from step to
 /// step (EHL: ∝ Q^−0.1), and what it does change moves the approach by a fraction of the
 /// film; the change is predicted to first order from its sensitivity at the last step.
+/// Of one roller, or of the rollers in the lanes of `T`.
 #[inline(always)]
-pub(crate) fn predicted_approach(geometric_approach_m: f32, memory: &RollerMemory) -> f32 {
-    let predicted_film = max(
-        memory.film_m
-            + memory.film_sensitivity * (geometric_approach_m - memory.geometric_approach_m),
-        0.0,
-    );
+pub(crate) fn predicted_approach<T: Real>(geometric_approach_m: T, memory: &RollerMemory<T>) -> T {
+    let predicted_film = (memory.film_m
+        + memory.film_sensitivity * (geometric_approach_m - memory.geometric_approach_m))
+        .max(T::splat(0.0));
     geometric_approach_m + predicted_film
 }
 
@@ -379,22 +443,23 @@ pub(crate) fn prepare_roller<const S: usize>(
     memory: &RollerMemory,
 ) -> Prepared {
     let approach1 = predicted_approach(geometric_approach_m, memory);
-    prepare_sliced(
-        roller.evaluate(approach1, tilt_rad),
+    prepare_sliced::<f32>(
+        RollerLoads::from_lanes(&roller.evaluate(approach1, tilt_rad)),
         approach1,
         geometric_approach_m,
         memory,
     )
 }
 
-/// [`prepare_roller`] after its slice pass: the slices' load `r1` at `approach1` (m).
+/// [`prepare_roller`] after its slice pass: the slices' load `r1` at `approach1` (m), of one
+/// roller or of the rollers in the lanes of `T` (the host prepares four at once).
 #[inline(always)]
-pub(crate) fn prepare_sliced(
-    r1: RollerLoad,
-    approach1: f32,
-    geometric_approach_m: f32,
-    memory: &RollerMemory,
-) -> Prepared {
+pub(crate) fn prepare_sliced<T: Real>(
+    r1: RollerLoads<T>,
+    approach1: T,
+    geometric_approach_m: T,
+    memory: &RollerMemory<T>,
+) -> Prepared<T> {
     // A whole-roller power law through the slices there (matching load, stiffness and
     // curvature: its error is third order in the approach's step from `approach1`), and the
     // film–load equation on it. Load and moment follow the law.
@@ -404,14 +469,43 @@ pub(crate) fn prepare_sliced(
     let law1 = PowerLaw::fit(&r1, approach1, &memory.law);
     // From the slices' load where they carry one, else from the last step's; before the first
     // step a little above it.
-    let start =
-        select(r1.load_n > FIT_MIN_N, law1.ln_load_ref, memory.ln_load) + memory.start_offset;
+    let carried = r1.load_n.gt(T::splat(FIT_MIN_N));
+    let start = T::select(carried, law1.ln_load_ref, memory.ln_load) + memory.start_offset;
     Prepared {
         geometric_approach_m,
         approach1,
         r1,
         law: law1,
         newton: Newton::new(&law1, geometric_approach_m, start),
+    }
+}
+
+/// A roller's solve after its Newton iterations, of one roller or of the rollers in the lanes
+/// of `T`: [`CoupledRoller`] but the regimes.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Finished<T: Real> {
+    load: RollerLoads<T>,
+    approach_m: T,
+    ln_load: T,
+    films: [(T, T); 2],
+    softening: T,
+    film_coupling_m_per_n: T,
+}
+
+impl<T: Real> Finished<T> {
+    /// The result of the roller in lane `i`, with its contacts' regimes on `regime_axes`.
+    #[inline(always)]
+    pub(crate) fn roller(&self, i: usize, regime_axes: &[RegimeAxis; 2]) -> CoupledRoller {
+        let ln_load = self.ln_load.lane(i);
+        CoupledRoller {
+            load: self.load.lane(i),
+            approach_m: self.approach_m.lane(i),
+            ln_load,
+            films: self.films.map(|(c, m)| (c.lane(i), m.lane(i))),
+            softening: self.softening.lane(i),
+            film_coupling_m_per_n: self.film_coupling_m_per_n.lane(i),
+            regimes: regime_axes.map(|axis| axis.at(ln_load)),
+        }
     }
 }
 
@@ -424,6 +518,17 @@ pub(crate) fn finish_roller(
     regime_axes: &[RegimeAxis; 2],
     memory: &mut RollerMemory,
 ) -> CoupledRoller {
+    finish_lanes::<f32>(prepared, films, memory).roller(0, regime_axes)
+}
+
+/// [`finish_roller`] but the regimes, of one roller or of the rollers in the lanes of `T`
+/// (the host finishes four at once), with their memories `memory` (updated).
+#[inline(always)]
+pub(crate) fn finish_lanes<T: Real>(
+    prepared: &Prepared<T>,
+    films: &StepFilms<'_>,
+    memory: &mut RollerMemory<T>,
+) -> Finished<T> {
     let Prepared {
         geometric_approach_m,
         approach1,
@@ -435,31 +540,39 @@ pub(crate) fn finish_roller(
     let approach_m = geometric_approach_m + solved2.film_m;
     let ln_load = solved2.ln_load;
     let load_n = exp_in_range(ln_load);
-    let mut load = r1;
     // At the root, Q = e^λ is the law's load at `approach_m`; a roller whose approach stays
     // short of the law's offset (no film, separated) carries nothing.
-    load.load_n = select(approach_m > law1.offset_m, load_n, 0.0);
-    load.moment_nm += load.stiffness_moment_n * (approach_m - approach1);
+    let carried = T::select(approach_m.gt(law1.offset_m), load_n, T::splat(0.0));
+    let load = RollerLoads {
+        load_n: carried,
+        moment_nm: r1.moment_nm + r1.stiffness_moment_n * (approach_m - approach1),
+        ..r1
+    };
     // At the root, dE/dλ·dλ = dδ_geo + dH/dλ·dλ: dH/dδ_geo = H'/(E' − H').
     let film_slope_m = solved2.last.slope_m;
-    let film_sensitivity = film_slope_m / max(solved2.elastic_slope_m - film_slope_m, 1.0e-30);
+    let film_sensitivity =
+        film_slope_m / (solved2.elastic_slope_m - film_slope_m).max(T::splat(1.0e-30));
+    let film_sensitivity = film_sensitivity.max(T::splat(-1.0)).min(T::splat(0.0));
     *memory = RollerMemory {
         ln_load,
         film_m: solved2.film_m,
         geometric_approach_m,
-        film_sensitivity: min(max(film_sensitivity, -1.0), 0.0),
+        film_sensitivity,
         law: law1,
-        start_offset: 0.0,
+        start_offset: T::splat(0.0),
     };
 
-    let per_contact = films.contacts_from(&solved2.last, solved2.film_m);
-    CoupledRoller {
+    // dH/dQ, and 1/(1 − K·dH/dQ) ≥ 1 (dH/dQ ≤ 0): film coupling and roller stiffness share
+    // it.
+    let film_slope_m_per_n = film_slope_m / load_n;
+    let softening = T::splat(1.0) / (T::splat(1.0) - load.stiffness_n_per_m * film_slope_m_per_n);
+    Finished {
         load,
         approach_m,
         ln_load,
-        films: per_contact,
-        film_slope_m_per_n: film_slope_m / load_n,
-        regimes: regime_axes.map(|axis| axis.at(ln_load)),
+        films: films.contacts_from(&solved2.last, solved2.film_m),
+        softening,
+        film_coupling_m_per_n: film_slope_m_per_n * softening,
     }
 }
 

@@ -30,7 +30,7 @@
 
 use crate::film::{ContactInput, FilmModel, MARTIN_CENTRAL, MARTIN_MINIMUM};
 use crate::lanes::Real;
-use crate::math::{exp, exp_in_range, ln, max, min, select, sqrt, sqrt_non_negative};
+use crate::math::{exp, exp_in_range, ln, max, min, sqrt};
 
 /// Nodes of the film table per contact kind.
 pub const TABLE_NODES: usize = 96;
@@ -107,7 +107,7 @@ pub(crate) struct FilmSums<T: Real> {
     /// The terms of the sum, each contact's central film, divided by u^κ.
     central: [T; 2],
     /// Where λ fell in the table.
-    cell: T::PerLane<Cell>,
+    cell: Cell<T>,
 }
 
 /// Film sum of one roller.
@@ -126,22 +126,25 @@ impl Default for FilmSum {
 }
 
 impl<T: Real> FilmSums<T> {
-    /// The sums of single rollers side by side.
+    /// Empty sums, with λ in the table's first cell: a solve's before its first evaluation.
     #[inline(always)]
-    pub(crate) fn from_lanes(sums: &T::PerLane<FilmSum>) -> Self {
+    pub(crate) fn zero() -> Self {
+        let zero = T::splat(0.0);
         Self {
-            total_m: T::from_per_lane(sums, |s| s.total_m),
-            slope_m: T::from_per_lane(sums, |s| s.slope_m),
-            inv_load: T::from_per_lane(sums, |s| s.inv_load),
-            central: [
-                T::from_per_lane(sums, |s| s.central[0]),
-                T::from_per_lane(sums, |s| s.central[1]),
-            ],
-            cell: T::map_items(sums, |s| s.cell),
+            total_m: zero,
+            slope_m: zero,
+            inv_load: zero,
+            central: [zero; 2],
+            cell: Cell {
+                index: T::build(|_| 0),
+                fraction: zero,
+                slope_scale: zero,
+            },
         }
     }
 
     /// The sum of lane `i` (a zero sum beyond the lanes).
+    #[cfg(test)]
     #[inline(always)]
     pub(crate) fn lane(&self, i: usize) -> FilmSum {
         FilmSum {
@@ -149,46 +152,80 @@ impl<T: Real> FilmSums<T> {
             slope_m: self.slope_m.lane(i),
             inv_load: self.inv_load.lane(i),
             central: self.central.map(|c| c.lane(i)),
-            cell: T::item(&self.cell, i),
+            cell: Cell {
+                index: T::item(&self.cell.index, i),
+                fraction: self.cell.fraction.lane(i),
+                slope_scale: self.cell.slope_scale.lane(i),
+            },
         }
     }
 }
 
 /// Where λ falls in the table: the cell's first node and the fraction across it, held to the
 /// table at both ends (the film is continued flat beyond them: below 1 N Martin's film rules,
-/// above 144 kN no roller goes).
-#[derive(Clone, Copy, Debug, Default)]
-struct Cell {
-    index: usize,
-    fraction: f32,
+/// above 144 kN no roller goes). Of one roller, or of the rollers in the lanes of `T`: the
+/// host computes the cells of four rollers in SIMD lanes and looks up only the nodes lane by
+/// lane.
+#[derive(Clone, Copy, Debug)]
+struct Cell<T: Real = f32> {
+    index: T::PerLane<usize>,
+    fraction: T,
     /// 1/Δλ inside the table, 0 beyond it (the slope of the flat continuation).
-    slope_scale: f32,
+    slope_scale: T,
 }
 
-impl Cell {
+impl Default for Cell {
+    fn default() -> Self {
+        Self {
+            index: 0,
+            fraction: 0.0,
+            slope_scale: 0.0,
+        }
+    }
+}
+
+impl<T: Real> Cell<T> {
     #[inline(always)]
-    fn at(ln_load: f32) -> Self {
-        let position = (ln_load - LN_LOAD_FIRST) * (1.0 / TABLE_STEP);
+    fn at(ln_load: T) -> Self {
+        let position = (ln_load - T::splat(LN_LOAD_FIRST)) * T::splat(1.0 / TABLE_STEP);
         let end = (TABLE_NODES - 1) as f32;
-        let clamped = min(max(position, 0.0), end);
+        let clamped = position.max(T::splat(0.0)).min(T::splat(end));
         // One float-to-integer conversion at a fixed cost; the clamp keeps it in the table
         // (the last node starts no cell: at the end the fraction is 1 across the last cell).
-        let index = min(clamped, end - 1.0) as usize;
+        let (index, index_f32) = clamped.min(T::splat(end - 1.0)).truncate_index();
         Self {
             index,
-            fraction: clamped - index as f32,
+            fraction: clamped - index_f32,
             // Beyond the table the film is continued flat: the clamp moved the position.
-            slope_scale: (1.0 / TABLE_STEP) * f32::from(u8::from(clamped == position)),
+            slope_scale: T::splat(1.0 / TABLE_STEP) * T::indicator(clamped.eq(position)),
         }
     }
 
     /// Value and d/dλ of the linear interpolant of `nodes`.
     #[inline(always)]
-    fn interpolate(&self, nodes: &[f32; TABLE_NODES]) -> (f32, f32) {
-        let a = nodes.get(self.index).copied().unwrap_or(0.0);
-        let b = nodes.get(self.index + 1).copied().unwrap_or(0.0);
+    fn interpolate(&self, nodes: &[f32; TABLE_NODES]) -> (T, T) {
+        // The index is at most TABLE_NODES − 2 by construction (`at`); held there again so
+        // that the compiler sees both look-ups in bounds and drops their checks and branches.
+        let node = |i: usize, next: usize| {
+            nodes
+                .get(min_index(i, TABLE_NODES - 2) + next)
+                .copied()
+                .unwrap_or(0.0)
+        };
+        let a = T::from_per_lane(&self.index, |&i| node(i, 0));
+        let b = T::from_per_lane(&self.index, |&i| node(i, 1));
         let d = b - a;
         (a + self.fraction * d, d * self.slope_scale)
+    }
+}
+
+/// The smaller of two indices (`Ord::min` without its generic call).
+#[inline(always)]
+fn min_index(a: usize, b: usize) -> usize {
+    if a < b {
+        a
+    } else {
+        b
     }
 }
 
@@ -290,13 +327,14 @@ impl StepFilms<'_> {
     /// √(e² + h_RI²), summed. The lanes run the same operations in the same order as one
     /// roller (the same bits); only the table look-ups go lane by lane. Inlined into the
     /// host's lanes (a call would pass the lanes through memory); a call on the M4, whose
-    /// registers the inlined sum would overflow into the stack (+400 instructions per step).
-    #[cfg_attr(target_arch = "arm", inline)]
+    /// registers the inlined sum would overflow into the stack (+400 instructions per step;
+    /// `inline(never)`: with the bounds checks gone LLVM would inline it).
+    #[cfg_attr(target_arch = "arm", inline(never))]
     #[cfg_attr(not(target_arch = "arm"), inline(always))]
     pub(crate) fn sum_at<T: Real>(&self, ln_load: T) -> FilmSums<T> {
         // λ is bracketed by the scalar solve: in range.
         let inv_load = exp_in_range(-ln_load);
-        let cell = ln_load.map_lanes(Cell::at);
+        let cell = Cell::at(ln_load);
         let mut total_m = T::splat(0.0);
         let mut slope_m = T::splat(0.0);
         let mut central = [T::splat(0.0); 2];
@@ -308,8 +346,7 @@ impl StepFilms<'_> {
             .zip(self.martin_per_scale.iter())
             .zip(central.iter_mut())
         {
-            let e = T::from_per_lane(&cell, |c| c.interpolate(nodes).0);
-            let de = T::from_per_lane(&cell, |c| c.interpolate(nodes).1);
+            let (e, de) = cell.interpolate(nodes);
             let hydro = T::splat(b) * inv_load;
             // e and h_RI are finite (table values, and B/Q with λ bracketed): no clamp needed.
             let h = (e * e + hydro * hydro).sqrt_non_negative();
@@ -333,15 +370,17 @@ impl StepFilms<'_> {
     /// films of both contacts are then scaled by total_m/last.total_m, so that the central
     /// films add up to the root's sum. (The last Newton step is small, and this spares a
     /// second look-up in the table at the root.)
+    /// Of one roller, or of the rollers in the lanes of `T`.
     #[inline(always)]
-    pub(crate) fn contacts_from(&self, last: &FilmSum, total_m: f32) -> [(f32, f32); 2] {
+    pub(crate) fn contacts_from<T: Real>(&self, last: &FilmSums<T>, total_m: T) -> [(T, T); 2] {
         // The ratio, and u^κ: `last.central` and the table are in the table's units.
-        let scale = select(
-            last.total_m > 0.0,
-            total_m / max(last.total_m, 1.0e-30),
-            0.0,
-        ) * self.speed_scale;
-        let mut out = [(0.0, 0.0); 2];
+        let zero = T::splat(0.0);
+        let scale = T::select(
+            last.total_m.gt(zero),
+            total_m / last.total_m.max(T::splat(1.0e-30)),
+            zero,
+        ) * T::splat(self.speed_scale);
+        let mut out = [(zero, zero); 2];
         for (((o, minimum), &b), &central) in out
             .iter_mut()
             .zip(self.table.minimum.iter())
@@ -349,10 +388,10 @@ impl StepFilms<'_> {
             .zip(last.central.iter())
         {
             let hm = last.cell.interpolate(minimum).0;
-            let hr_min = b * last.inv_load * (MARTIN_MINIMUM / MARTIN_CENTRAL);
+            let hr_min = T::splat(b) * last.inv_load * T::splat(MARTIN_MINIMUM / MARTIN_CENTRAL);
             *o = (
                 central * scale,
-                sqrt_non_negative(hm * hm + hr_min * hr_min) * scale,
+                (hm * hm + hr_min * hr_min).sqrt_non_negative() * scale,
             );
         }
         out

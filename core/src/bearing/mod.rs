@@ -10,6 +10,7 @@
 mod coupling;
 mod equilibrium;
 mod film_table;
+mod lockstep;
 mod output;
 
 pub use coupling::NEWTON_ITERATIONS;
@@ -20,14 +21,10 @@ pub use output::{BearingOutput, RollerOutput, StepStatus};
 use crate::contact::{ContactLaw, SlicedRoller};
 use crate::error::{in_range, Allowed, ParamError};
 use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis, ServedLoads};
-use crate::lanes::F32x4;
 use crate::math::{ln, select, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use core::f32::consts::PI;
-use coupling::{
-    finish_roller, predicted_approach, prepare_roller, prepare_sliced, ContactContext, Newton,
-    Prepared, RollerMemory,
-};
+use coupling::{finish_roller, prepare_roller, ContactContext, CoupledRoller, RollerMemory};
 use film_table::FilmTable;
 use output::StiffnessSums;
 
@@ -332,55 +329,22 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         };
         let places = parts.places(state);
         // Each roller: its slice pass and power law (`prepare_roller`), NEWTON_ITERATIONS
-        // Newton steps, its outputs (`finish_roller`). A superscalar host runs the slice passes
-        // and the Newton steps of four rollers at a time in SIMD lanes (`crate::lanes`): each
-        // Newton step is a chain of dependent operations whose latency the core cannot hide
+        // Newton steps, its outputs (`finish_roller`). A superscalar host runs all of that
+        // for four rollers at a time in SIMD lanes, two groups of four in flight (`lockstep`):
+        // each stage is a chain of dependent operations whose latency the core cannot hide
         // one roller after another. The in-order M4 gains nothing from lanes and would pay
         // ≈ 4 k instructions of loads and stores for the staged state, so it runs the rollers
         // one after another. The operations of each roller are the same either way, so are
-        // the results, bit for bit (tests in `lanes`, `coupling` and `slicing`; `hil-sim qemu`
-        // compares whole traces).
-        let mut prepared = [Prepared::default(); Z];
+        // the results, bit for bit (tests in `lanes`, `coupling`, `slicing` and `lockstep`;
+        // `hil-sim qemu` compares whole traces).
+        let mut coupled = [CoupledRoller::default(); Z];
         if LOCKSTEP {
-            // The slice passes of all rollers together, in SIMD lanes.
-            let mut approach1 = [0.0f32; Z];
-            let mut tilt = [0.0f32; Z];
-            for (((a, t), place), memory) in approach1
-                .iter_mut()
-                .zip(tilt.iter_mut())
-                .zip(places.iter())
-                .zip(self.memory.iter())
-            {
-                *a = predicted_approach(place.geometric_m, memory);
-                *t = place.tilt_rad;
+            lockstep::Lockstep {
+                roller: &self.roller,
+                films: &films,
+                regime_axes: &regime_axes,
             }
-            let mut sliced = [crate::contact::RollerLoad::default(); Z];
-            self.roller.evaluate_many(&approach1, &tilt, &mut sliced);
-            for ((((p, place), memory), &a), &r1) in prepared
-                .iter_mut()
-                .zip(places.iter())
-                .zip(self.memory.iter())
-                .zip(approach1.iter())
-                .zip(sliced.iter())
-            {
-                *p = prepare_sliced(r1, a, place.geometric_m, memory);
-            }
-            // The Newton steps of four rollers at a time in SIMD lanes (a short last group
-            // runs with idle lanes: default states, discarded).
-            for group in prepared.chunks_mut(4) {
-                let mut states = [Newton::default(); 4];
-                states
-                    .iter_mut()
-                    .zip(group.iter())
-                    .for_each(|(s, p)| *s = p.newton);
-                let mut lanes = Newton::<F32x4>::start_lanes(&states);
-                for _ in 0..NEWTON_ITERATIONS {
-                    lanes.iterate(&films);
-                }
-                for (i, p) in group.iter_mut().enumerate() {
-                    lanes.store_lane(i, &mut p.newton);
-                }
-            }
+            .solve(&places, &mut self.memory, &mut coupled);
         }
         parts.assemble(
             &mut self.memory,
@@ -388,8 +352,8 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             state,
             &places,
             |roller, memory, j, geometric, tilt| {
-                let p = if LOCKSTEP {
-                    prepared.get(j).copied().unwrap_or_default()
+                let r = if LOCKSTEP {
+                    coupled.get(j).copied().unwrap_or_default()
                 } else {
                     let mut p = prepare_roller(roller, geometric, tilt, memory);
                     // A local copy, which the compiler keeps in registers.
@@ -398,19 +362,14 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                         newton.iterate(&films);
                     }
                     p.newton = newton;
-                    p
+                    finish_roller(&p, &films, &regime_axes, memory)
                 };
-                let r = finish_roller(&p, &films, &regime_axes, memory);
                 let loaded = r.load.load_n >= 1.0;
                 span = (
                     crate::math::min(span.0, crate::math::select(loaded, r.ln_load, f32::MAX)),
                     crate::math::max(span.1, crate::math::select(loaded, r.ln_load, f32::MIN)),
                 );
                 let [(central_in, min_in), (central_out, min_out)] = r.films;
-                let s0 = r.load.stiffness_n_per_m;
-                // 1/(1 − K·dH/dQ) ≥ 1 (dH/dQ ≤ 0): film coupling and roller stiffness share it.
-                let softening = 1.0 / (1.0 - s0 * r.film_slope_m_per_n);
-                let coupling = r.film_slope_m_per_n * softening;
                 // Films are finite: hidden at standstill by a factor 0 or 1.
                 let shown = |h: f32| h * film_shown;
                 // A table, not an `if`: the work must not depend on the speed.
@@ -426,14 +385,14 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                     central_film_out_m: shown(central_out),
                     min_film_in_m: shown(min_in),
                     min_film_out_m: shown(min_out),
-                    roller_stiffness_n_per_m: s0 * softening,
+                    roller_stiffness_n_per_m: r.load.stiffness_n_per_m * r.softening,
                     regime_in: shown_regime(r.regimes[0]),
                     regime_out: shown_regime(r.regimes[1]),
                     film_source_in: served[0].source_at(r.ln_load),
                     film_source_out: served[1].source_at(r.ln_load),
                     ..RollerOutput::ZERO
                 };
-                (r.load, roller, coupling)
+                (r.load, roller, r.film_coupling_m_per_n)
             },
         );
         // The loads the next step renews the table at first; unchanged when nothing is loaded.
@@ -499,9 +458,8 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     }
 }
 
-/// Whether the lubricated step runs the slice passes and Newton steps of the rollers in SIMD
-/// lanes, four at a time (hosts), or each roller in turn (bare-metal ARM: the in-order
-/// Cortex-M).
+/// Whether the lubricated step solves the rollers in SIMD lanes, four at a time (hosts:
+/// `lockstep`), or each roller in turn (bare-metal ARM: the in-order Cortex-M).
 const LOCKSTEP: bool = !cfg!(all(target_arch = "arm", target_os = "none"));
 
 /// A roller's direction (cos, sin of θ_j), geometric approach (m) and tilt (rad) at a step.

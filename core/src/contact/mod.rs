@@ -9,4 +9,5 @@ mod slicing;
 
 pub use hertz::HertzLineContact;
 pub use law::{ContactLaw, PALMGREN_K};
+pub(crate) use slicing::RollerLoads;
 pub use slicing::{RollerLoad, SlicedRoller};

@@ -35,6 +35,48 @@ pub struct RollerLoad {
     pub stiffness_derivative_n_per_m2: f32,
 }
 
+/// [`RollerLoad`] of one roller (`f32`) or of the rollers in the lanes of `T`, field by
+/// field: what the host's lockstep stages pass on in registers.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RollerLoads<T: Real> {
+    pub load_n: T,
+    pub moment_nm: T,
+    pub stiffness_n_per_m: T,
+    pub stiffness_moment_n: T,
+    pub stiffness_tilt_nm: T,
+    pub stiffness_derivative_n_per_m2: T,
+}
+
+impl<T: Real> RollerLoads<T> {
+    /// The loads of single rollers side by side.
+    #[inline(always)]
+    pub(crate) fn from_lanes(loads: &T::PerLane<RollerLoad>) -> Self {
+        Self {
+            load_n: T::from_per_lane(loads, |l| l.load_n),
+            moment_nm: T::from_per_lane(loads, |l| l.moment_nm),
+            stiffness_n_per_m: T::from_per_lane(loads, |l| l.stiffness_n_per_m),
+            stiffness_moment_n: T::from_per_lane(loads, |l| l.stiffness_moment_n),
+            stiffness_tilt_nm: T::from_per_lane(loads, |l| l.stiffness_tilt_nm),
+            stiffness_derivative_n_per_m2: T::from_per_lane(loads, |l| {
+                l.stiffness_derivative_n_per_m2
+            }),
+        }
+    }
+
+    /// The load of the roller in lane `i`.
+    #[inline(always)]
+    pub(crate) fn lane(&self, i: usize) -> RollerLoad {
+        RollerLoad {
+            load_n: self.load_n.lane(i),
+            moment_nm: self.moment_nm.lane(i),
+            stiffness_n_per_m: self.stiffness_n_per_m.lane(i),
+            stiffness_moment_n: self.stiffness_moment_n.lane(i),
+            stiffness_tilt_nm: self.stiffness_tilt_nm.lane(i),
+            stiffness_derivative_n_per_m2: self.stiffness_derivative_n_per_m2.lane(i),
+        }
+    }
+}
+
 /// A roller cut into `S` slices, bound to its contact law.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SlicedRoller<const S: usize> {
@@ -119,9 +161,29 @@ impl<const S: usize> SlicedRoller<S> {
         }
     }
 
+    /// [`SlicedRoller::evaluate`] for four rollers of this shape at approaches `approach_m`
+    /// and tilts `tilt_rad`, bit for bit, as SIMD lanes: the host's slice pass. The Palmgren
+    /// pass runs the rollers side by side (`evaluate_palmgren_lanes`).
+    #[inline(always)]
+    pub(crate) fn evaluate_lanes(
+        &self,
+        approach_m: [f32; LANES],
+        tilt_rad: [f32; LANES],
+    ) -> RollerLoads<F32x4> {
+        match self.law.kind() {
+            ContactLaw::Palmgren => self.evaluate_palmgren_lanes(approach_m, tilt_rad),
+            ContactLaw::Lundberg => RollerLoads::from_lanes(&core::array::from_fn(|l| {
+                self.evaluate_any(
+                    approach_m.get(l).copied().unwrap_or(0.0),
+                    tilt_rad.get(l).copied().unwrap_or(0.0),
+                )
+            })),
+        }
+    }
+
     /// [`SlicedRoller::evaluate`] for `Z` rollers of this shape: `out[j]` is the load at
-    /// `approach_m[j]` and `tilt_rad[j]`, bit for bit. The Palmgren pass runs `LANES` rollers
-    /// side by side (`evaluate_palmgren_lanes`).
+    /// `approach_m[j]` and `tilt_rad[j]`, bit for bit. Runs `LANES` rollers side by side
+    /// (`SlicedRoller::evaluate_lanes`, the host step's pass).
     pub fn evaluate_many<const Z: usize>(
         &self,
         approach_m: &[f32; Z],
@@ -138,16 +200,10 @@ impl<const S: usize> SlicedRoller<S> {
             let mut t = [0.0f32; LANES];
             a.iter_mut().zip(approach).for_each(|(a, &v)| *a = v);
             t.iter_mut().zip(tilt).for_each(|(t, &v)| *t = v);
-            let loads: [RollerLoad; LANES] = match self.law.kind() {
-                ContactLaw::Palmgren => self.evaluate_palmgren_lanes(a, t),
-                ContactLaw::Lundberg => core::array::from_fn(|l| {
-                    self.evaluate_any(
-                        a.get(l).copied().unwrap_or(0.0),
-                        t.get(l).copied().unwrap_or(0.0),
-                    )
-                }),
-            };
-            out.iter_mut().zip(loads).for_each(|(o, l)| *o = l);
+            let loads = self.evaluate_lanes(a, t);
+            out.iter_mut()
+                .enumerate()
+                .for_each(|(l, o)| *o = loads.lane(l));
         }
     }
 
@@ -166,7 +222,7 @@ impl<const S: usize> SlicedRoller<S> {
             let (d, r) = slice_root(approach_m + x * tilt_rad + c);
             sums.add(d, r, x);
         }
-        self.load_from(&sums)
+        self.load_from(&sums).lane(0)
     }
 
     /// [`SlicedRoller::evaluate`] under the Palmgren law for `L` rollers of this shape at
@@ -180,7 +236,7 @@ impl<const S: usize> SlicedRoller<S> {
         &self,
         approach_m: [f32; LANES],
         tilt_rad: [f32; LANES],
-    ) -> [RollerLoad; LANES] {
+    ) -> RollerLoads<F32x4> {
         let mut bounds = [(0.0f32, 0.0f32); LANES];
         for ((b, &a), &t) in bounds
             .iter_mut()
@@ -213,22 +269,22 @@ impl<const S: usize> SlicedRoller<S> {
                 F32x4::splat(x),
             );
         }
-        core::array::from_fn(|i| self.load_from(&sums.lane(i)))
+        self.load_from(&sums)
     }
 
-    /// The roller's load from its Palmgren slice sums.
+    /// The roller's load from its Palmgren slice sums (of the rollers in the lanes of `T`).
     #[inline(always)]
-    fn load_from(&self, sums: &PalmgrenSums) -> RollerLoad {
+    fn load_from<T: Real>(&self, sums: &PalmgrenSums<T>) -> RollerLoads<T> {
         let PalmgrenSums([sw, swx, sk, skx, skxx, sk2]) = *sums;
         let scale = self.law.palmgren_coefficient() * self.slice_length_m;
-        let k_scale = (10.0 / 9.0) * scale;
-        RollerLoad {
-            load_n: sw * scale,
-            moment_nm: swx * scale,
+        let k_scale = T::splat((10.0 / 9.0) * scale);
+        RollerLoads {
+            load_n: sw * T::splat(scale),
+            moment_nm: swx * T::splat(scale),
             stiffness_n_per_m: sk * k_scale,
             stiffness_moment_n: skx * k_scale,
             stiffness_tilt_nm: skxx * k_scale,
-            stiffness_derivative_n_per_m2: sk2 * ((10.0 / 81.0) * scale),
+            stiffness_derivative_n_per_m2: sk2 * T::splat((10.0 / 81.0) * scale),
         }
     }
 
@@ -295,12 +351,6 @@ impl<T: Real> PalmgrenSums<T> {
         *skx = *skx + rx;
         *skxx = *skxx + rx * x;
         *sk2 = *sk2 + r / d;
-    }
-
-    /// The sums of the roller in lane `i`.
-    #[inline(always)]
-    fn lane(&self, i: usize) -> PalmgrenSums {
-        PalmgrenSums(self.0.map(|s| s.lane(i)))
     }
 }
 
