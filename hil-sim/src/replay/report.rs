@@ -86,6 +86,11 @@ impl ReplayReport {
         let force_p99 = percentile(&run.force_errors, 0.99);
         let mut reasons = Vec::new();
         let budget_ns = (config.limits.budget_us * 1e3) as u64;
+        let steps_over_budget = run
+            .step_times_ns
+            .iter()
+            .filter(|&&t| t as f64 > config.limits.budget_us * 1e3)
+            .count();
         let environment = run
             .pauses
             .as_ref()
@@ -100,10 +105,7 @@ impl ReplayReport {
                         e.threshold_ns as f64 / 1e3,
                         e.pauses_per_s,
                         e.expected_steps_over_budget,
-                        run.step_times_ns
-                            .iter()
-                            .filter(|&&t| t as f64 > config.limits.budget_us * 1e3)
-                            .count()
+                        steps_over_budget
                     );
                 }
                 reasons.push(reason);
@@ -124,11 +126,7 @@ impl ReplayReport {
             steps: run.step_times_ns.len(),
             step_time_ns,
             budget_ok,
-            steps_over_budget: run
-                .step_times_ns
-                .iter()
-                .filter(|&&t| t as f64 > config.limits.budget_us * 1e3)
-                .count(),
+            steps_over_budget,
             accuracy_ok,
             film_rel_err_p99: film_p99,
             force_rel_err_p99: force_p99,
