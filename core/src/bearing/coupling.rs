@@ -578,9 +578,10 @@ pub(crate) fn finish_lanes<T: Real>(
 
 #[cfg(test)]
 mod tests {
+    use super::super::film_table::tests::{contacts_with, martin, MODULUS_PA};
     use super::super::film_table::FilmTable;
     use super::*;
-    use crate::film::{Regression, MARTIN_CENTRAL};
+    use crate::film::Regression;
     use crate::lanes::F32x4;
 
     /// The host's lanes iterate each roller exactly as the M4 iterates it alone: four rollers
@@ -589,25 +590,9 @@ mod tests {
     /// with n from 1 to 4), three iterations each.
     #[test]
     fn lanes_iterate_each_roller_bit_for_bit() {
-        let contact = |r: f32| ContactInput {
-            load_n: 0.0,
-            length_m: 0.015,
-            entrainment_speed_m_s: 9.0,
-            reduced_radius_m: r,
-            reduced_modulus_pa: 2.3e11,
-            pressure_viscosity_pa_inv: 2.1e-8,
-            viscosity_pa_s: 0.08,
-        };
-        let contacts = [contact(3.7e-3), contact(5.1e-3)];
-        let martin = contacts.map(|c| {
-            MARTIN_CENTRAL
-                * c.viscosity_pa_s
-                * c.entrainment_speed_m_s
-                * c.reduced_radius_m
-                * c.length_m
-        });
+        let contacts = contacts_with(9.0, MODULUS_PA);
         let mut table = FilmTable::default();
-        let films = table.step(&Regression, contacts, martin, (2.0, 9.0), true);
+        let films = table.step(&Regression, contacts, martin(&contacts), (2.0, 9.0), true);
         let bits = |n: &Newton| {
             let (at, last, slope) = n.last;
             [n.lam, n.lo, n.hi, at, slope, last.total_m, last.slope_m].map(f32::to_bits)

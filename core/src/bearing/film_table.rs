@@ -405,25 +405,37 @@ fn ehl_part(h: f32, hydro: f32) -> f32 {
     sqrt(max(h * h - hydro * hydro, floor * floor))
 }
 
+/// Also the fixture of the other film-table users' tests (`coupling`, `lockstep`).
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::film::Regression;
 
-    fn contacts(speed_m_s: f32) -> [ContactInput; 2] {
+    /// The reduced modulus of the tests' contacts (Pa).
+    pub(in crate::bearing) const MODULUS_PA: f32 = 2.3e11;
+
+    /// The inner and outer contact templates of a hub-bearing-like roller (15 mm, R 3.7 and
+    /// 5.1 mm, α 21 GPa⁻¹, η₀ 0.08 Pa·s) at entrainment speed `speed_m_s` and reduced modulus
+    /// `modulus_pa`.
+    pub(in crate::bearing) fn contacts_with(speed_m_s: f32, modulus_pa: f32) -> [ContactInput; 2] {
         let c = |r: f32| ContactInput {
             load_n: 0.0,
             length_m: 0.015,
             entrainment_speed_m_s: speed_m_s,
             reduced_radius_m: r,
-            reduced_modulus_pa: 2.3e11,
+            reduced_modulus_pa: modulus_pa,
             pressure_viscosity_pa_inv: 2.1e-8,
             viscosity_pa_s: 0.08,
         };
         [c(3.7e-3), c(5.1e-3)]
     }
 
-    fn martin(c: &[ContactInput; 2]) -> [f32; 2] {
+    fn contacts(speed_m_s: f32) -> [ContactInput; 2] {
+        contacts_with(speed_m_s, MODULUS_PA)
+    }
+
+    /// Martin's coefficients B = MARTIN_CENTRAL·η₀·u·R·l of the contacts.
+    pub(in crate::bearing) fn martin(c: &[ContactInput; 2]) -> [f32; 2] {
         c.map(|c| {
             MARTIN_CENTRAL
                 * c.viscosity_pa_s

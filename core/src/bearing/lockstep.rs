@@ -150,10 +150,11 @@ struct Group<'a> {
 #[cfg(test)]
 mod tests {
     use super::super::coupling::{finish_roller, prepare_roller};
+    use super::super::film_table::tests::{contacts_with, martin};
     use super::super::film_table::FilmTable;
     use super::*;
     use crate::contact::ContactLaw;
-    use crate::film::{ContactInput, Regression, MARTIN_CENTRAL};
+    use crate::film::Regression;
     use crate::params::{reduced_modulus, BearingGeometry, Crown, Material};
 
     /// The grouped lanes give every roller the result and the memory of its solve alone (the
@@ -178,25 +179,9 @@ mod tests {
             .unwrap();
             let modulus = reduced_modulus(&Material::STEEL, &Material::STEEL);
             let roller = SlicedRoller::<10>::new(&geometry, modulus, ContactLaw::Palmgren);
-            let contact = |r: f32| ContactInput {
-                load_n: 0.0,
-                length_m: 0.015,
-                entrainment_speed_m_s: 6.0,
-                reduced_radius_m: r,
-                reduced_modulus_pa: modulus,
-                pressure_viscosity_pa_inv: 2.1e-8,
-                viscosity_pa_s: 0.08,
-            };
-            let contacts = [contact(3.7e-3), contact(5.1e-3)];
-            let martin = contacts.map(|c| {
-                MARTIN_CENTRAL
-                    * c.viscosity_pa_s
-                    * c.entrainment_speed_m_s
-                    * c.reduced_radius_m
-                    * c.length_m
-            });
+            let contacts = contacts_with(6.0, modulus);
             let mut table = FilmTable::default();
-            let films = table.step(&Regression, contacts, martin, (2.0, 9.0), true);
+            let films = table.step(&Regression, contacts, martin(&contacts), (2.0, 9.0), true);
             let axes = [RegimeAxis::new(6.0, 1.5), RegimeAxis::new(5.5, 1.6)];
             let lockstep = Lockstep {
                 roller: &roller,
