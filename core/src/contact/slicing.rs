@@ -10,7 +10,7 @@ use crate::lanes::{F32x4, Real};
 use crate::math::{max, min, ninth_root_in_range, select};
 use crate::params::BearingGeometry;
 
-/// Rollers per pass of [`SlicedRoller::evaluate_many`]: four f32 lanes fill an SSE/NEON
+/// Rollers per pass of `SlicedRoller::evaluate_lanes`: four f32 lanes fill an SSE/NEON
 /// register.
 const LANES: usize = 4;
 
@@ -181,32 +181,6 @@ impl<const S: usize> SlicedRoller<S> {
         }
     }
 
-    /// [`SlicedRoller::evaluate`] for `Z` rollers of this shape: `out[j]` is the load at
-    /// `approach_m[j]` and `tilt_rad[j]`, bit for bit. Runs `LANES` rollers side by side
-    /// (`SlicedRoller::evaluate_lanes`, the host step's pass).
-    pub fn evaluate_many<const Z: usize>(
-        &self,
-        approach_m: &[f32; Z],
-        tilt_rad: &[f32; Z],
-        out: &mut [RollerLoad; Z],
-    ) {
-        for ((out, approach), tilt) in out
-            .chunks_mut(LANES)
-            .zip(approach_m.chunks(LANES))
-            .zip(tilt_rad.chunks(LANES))
-        {
-            // A short last chunk runs with idle lanes (zero approach: no slice touches).
-            let mut a = [0.0f32; LANES];
-            let mut t = [0.0f32; LANES];
-            a.iter_mut().zip(approach).for_each(|(a, &v)| *a = v);
-            t.iter_mut().zip(tilt).for_each(|(t, &v)| *t = v);
-            let loads = self.evaluate_lanes(a, t);
-            out.iter_mut()
-                .enumerate()
-                .for_each(|(l, o)| *o = loads.lane(l));
-        }
-    }
-
     /// [`SlicedRoller::evaluate`] under the Palmgren law w = c·δ^(10/9), with its derivatives
     /// (10/9)·w/δ and (10/81)·w/δ²: with r = δ^(1/9) the slice sums are taken of w = δ·r,
     /// w/δ = r and w/δ² = r/δ, and the constants (c, the slice length, 10/9, 10/81) applied
@@ -365,11 +339,11 @@ mod tests {
 
     const E: f32 = 230.77e9;
 
-    /// The lanes of `evaluate_many` are the one-roller pass bit for bit: crowned and straight
-    /// rollers, both laws, 17 rollers (a short last chunk), approaches from separated to deep,
-    /// tilts of both signs, and NaN.
+    /// The lanes of `evaluate_lanes` are the one-roller pass bit for bit: crowned and straight
+    /// rollers, both laws, 17 rollers in groups of four (a short last group, idle lanes at
+    /// zero approach), approaches from separated to deep, tilts of both signs, and NaN.
     #[test]
-    fn evaluate_many_is_evaluate_bit_for_bit() {
+    fn evaluate_lanes_is_evaluate_bit_for_bit() {
         for crown in [Crown::None, Crown::Logarithmic { scale: 1.0 }] {
             for law in [ContactLaw::Palmgren, ContactLaw::Lundberg] {
                 let roller = SlicedRoller::<10>::new(&geometry(crown), E, law);
@@ -382,7 +356,18 @@ mod tests {
                 approach[3] = f32::NAN;
                 tilt[16] = f32::NAN;
                 let mut many = [RollerLoad::default(); 17];
-                roller.evaluate_many(&approach, &tilt, &mut many);
+                for ((out, a), t) in many
+                    .chunks_mut(LANES)
+                    .zip(approach.chunks(LANES))
+                    .zip(tilt.chunks(LANES))
+                {
+                    let lanes =
+                        |v: &[f32]| core::array::from_fn(|l| v.get(l).copied().unwrap_or(0.0));
+                    let loads = roller.evaluate_lanes(lanes(a), lanes(t));
+                    for (l, o) in out.iter_mut().enumerate() {
+                        *o = loads.lane(l);
+                    }
+                }
                 for ((m, &a), &t) in many.iter().zip(&approach).zip(&tilt) {
                     let one = roller.evaluate(a, t);
                     let bits = |l: &RollerLoad| {
