@@ -11,3 +11,4 @@ pub mod pipeline;
 pub mod quant;
 pub mod sweep;
 pub mod train;
+pub mod trainlm;

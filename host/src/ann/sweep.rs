@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 use super::metrics::FilmErrors;
 use super::mlp::Activation;
 use super::pipeline::split_samples;
-use super::train::{train, Samples, TrainOptions};
+use super::train::{train, Samples, Solver, TrainOptions};
 
 /// The grid.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -137,13 +137,17 @@ pub fn heading(config: &SweepConfig, dataset: &str) -> String {
     };
     format!(
         "Architecture sweep on `{dataset}`: inputs `{}`, target `{}`, weight decay λ = {:e}, \
-         at most {} Levenberg–Marquardt epochs, early-stopping patience {}, {} restart(s), \
-         seed {}. Each network is trained on the first N solved records (its own 70/15/15 \
+         at most {} Levenberg–Marquardt epochs ({}), early-stopping patience {}, {} \
+         restart(s), seed {}. Each network is trained on the first N solved records (its own 70/15/15 \
          split) and measured on its held-out test set; `time s` is the training wall time.\n",
         kebab(clap::ValueEnum::to_possible_value(&b.inputs)),
         kebab(clap::ValueEnum::to_possible_value(&b.target)),
         b.regularisation,
         b.max_epochs,
+        match b.solver {
+            Solver::Minpack => "MINPACK, the `levenberg-marquardt` crate",
+            Solver::Trainlm => "MATLAB `trainlm`'s normal equations",
+        },
         b.patience,
         b.restarts,
         b.seed
@@ -203,12 +207,17 @@ mod tests {
             "`data/x.jsonl`",
             "inputs `wug-eta-modulus`",
             "target `log-ratio`",
-            "at most 12 Levenberg–Marquardt epochs",
+            "at most 12 Levenberg–Marquardt epochs (MINPACK",
             "patience 6",
             "1 restart(s)",
         ] {
             assert!(h.contains(part), "{part:?} missing from {h:?}");
         }
         assert!(heading(&SweepConfig::quick(TrainOptions::default()), "d").contains("at most 100 "));
+        let trainlm = TrainOptions {
+            solver: Solver::Trainlm,
+            ..TrainOptions::default()
+        };
+        assert!(heading(&SweepConfig::full(trainlm), "d").contains("(MATLAB `trainlm`"));
     }
 }

@@ -10,6 +10,9 @@
 //!
 //! Weight regularisation: the least-squares vector is `[(y − t)/√N ; √(λ/P) θ]`, i.e. the
 //! objective `mean squared error + λ · mean θ²` (weight decay, MacKay 1992).
+//!
+//! [`Solver::Trainlm`] minimises the same objective by MATLAB's normal-equation scheme
+//! ([`super::trainlm`]), which is far faster for nets of hundreds of parameters.
 
 use std::cell::RefCell;
 use std::time::Instant;
@@ -24,6 +27,7 @@ use serde::{Deserialize, Serialize};
 use super::features::{InputSet, Normaliser, TargetForm};
 use super::metrics::Metrics;
 use super::mlp::{Activation, Mlp};
+use super::trainlm::{mse, trainlm, TrainingData, TrainlmParams};
 use crate::dataset::ContactCase;
 
 /// How to train.
@@ -47,6 +51,30 @@ pub struct TrainOptions {
     pub seed: u64,
     /// Independent initialisations; the one with the best validation error is kept.
     pub restarts: usize,
+    /// Levenberg–Marquardt implementation (not written to model files when it is the default,
+    /// so the committed model file is unchanged).
+    #[serde(default, skip_serializing_if = "Solver::is_minpack")]
+    pub solver: Solver,
+}
+
+/// Which Levenberg–Marquardt implementation trains the net. Both minimise the same objective
+/// with the same early stopping; they take different steps, so their weights differ.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Solver {
+    /// The `levenberg-marquardt` crate (MINPACK: QR of the whole Jacobian each epoch). Trains
+    /// the committed model.
+    #[default]
+    Minpack,
+    /// MATLAB `trainlm`'s normal equations ([`super::trainlm`]): `JᵀJ` once per epoch and a
+    /// Cholesky per μ trial, for the larger nets of the architecture study.
+    Trainlm,
+}
+
+impl Solver {
+    fn is_minpack(&self) -> bool {
+        *self == Solver::Minpack
+    }
 }
 
 impl Default for TrainOptions {
@@ -61,6 +89,7 @@ impl Default for TrainOptions {
             patience: 6,
             seed: 1,
             restarts: 1,
+            solver: Solver::Minpack,
         }
     }
 }
@@ -159,20 +188,6 @@ struct Problem<'a> {
     state: RefCell<EarlyStop>,
 }
 
-/// Mean squared error; the per-sample terms are computed in parallel but summed in order, so
-/// training is deterministic whatever the thread count.
-fn mse(net: &Mlp, x: &[Vec<f64>], t: &[[f64; 2]]) -> f64 {
-    let terms: Vec<f64> = x
-        .par_iter()
-        .zip(t)
-        .map(|(xi, ti)| {
-            let y = net.forward(xi);
-            (y[0] - ti[0]).powi(2) + (y[1] - ti[1]).powi(2)
-        })
-        .collect();
-    terms.iter().sum::<f64>() / (2 * t.len()) as f64
-}
-
 impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
     type ResidualStorage = Owned<f64, Dyn>;
     type JacobianStorage = Owned<f64, Dyn, Dyn>;
@@ -265,6 +280,43 @@ fn prepare(
     (x, t)
 }
 
+/// One run of the crate's Levenberg–Marquardt from `net`'s weights: the network at its best
+/// validation error, that error and the epochs run.
+fn minpack(net: Mlp, data: &TrainingData) -> (Mlp, f64, usize) {
+    let p = net.parameter_count();
+    let problem = Problem {
+        data_weight: 1.0 / ((2 * data.x.len()) as f64).sqrt(),
+        reg_weight: (data.regularisation / p as f64).sqrt(),
+        state: RefCell::new(EarlyStop {
+            best_val: f64::INFINITY,
+            best_params: net.parameters(),
+            fails: 0,
+            epochs: 0,
+        }),
+        net,
+        x: data.x,
+        t: data.t,
+        val_x: data.val_x,
+        val_t: data.val_t,
+        max_epochs: data.max_epochs,
+        patience: data.patience,
+    };
+    let (problem, _report) = LevenbergMarquardt::new()
+        .with_patience(100_000)
+        .minimize(problem);
+    let state = problem.state.into_inner();
+    let mut net = problem.net;
+    // The final iterate may be better than the last checked one; check it too.
+    let final_val = mse(&net, data.val_x, data.val_t);
+    let (val, params) = if final_val < state.best_val {
+        (final_val, net.parameters())
+    } else {
+        (state.best_val, state.best_params)
+    };
+    net.set_parameters(&params);
+    (net, val, state.epochs)
+}
+
 /// Train on `train`, early-stopping on `validation`. The test set is not an argument: it is
 /// evaluated by the caller once the network is final.
 pub fn train(train: &Samples, validation: &Samples, options: &TrainOptions) -> Trained {
@@ -296,39 +348,26 @@ pub fn train(train: &Samples, validation: &Samples, options: &TrainOptions) -> T
             options.activation,
             options.seed.wrapping_add(1000 * restart as u64),
         );
-        let p = net.parameter_count();
-        let problem = Problem {
-            data_weight: 1.0 / ((2 * x.len()) as f64).sqrt(),
-            reg_weight: (options.regularisation / p as f64).sqrt(),
-            state: RefCell::new(EarlyStop {
-                best_val: f64::INFINITY,
-                best_params: net.parameters(),
-                fails: 0,
-                epochs: 0,
-            }),
-            net,
+        let data = TrainingData {
             x: &x,
             t: &t,
             val_x: &val_x,
             val_t: &val_t,
+            regularisation: options.regularisation,
             max_epochs: options.max_epochs,
             patience: options.patience,
         };
-        let (problem, _report) = LevenbergMarquardt::new()
-            .with_patience(100_000)
-            .minimize(problem);
-        let state = problem.state.into_inner();
-        let mut net = problem.net;
-        // The final iterate may be better than the last checked one; check it too.
-        let final_val = mse(&net, &val_x, &val_t);
-        let (val, params) = if final_val < state.best_val {
-            (final_val, net.parameters())
-        } else {
-            (state.best_val, state.best_params)
+        let (net, val, epochs) = match options.solver {
+            Solver::Minpack => minpack(net, &data),
+            Solver::Trainlm => {
+                let mut net = net;
+                let run = trainlm(&mut net, &data, TrainlmParams::default());
+                net.set_parameters(&run.best_params);
+                (net, run.best_validation_mse, run.epochs)
+            }
         };
-        net.set_parameters(&params);
         if best.as_ref().is_none_or(|b| val < b.1) {
-            best = Some((net, val, state.epochs));
+            best = Some((net, val, epochs));
         }
     }
     let (net, validation_mse, epochs) =

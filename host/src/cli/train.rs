@@ -13,7 +13,7 @@ use bearing_host::ann::mlp::Activation;
 use bearing_host::ann::model::{CoreReport, ModelFile};
 use bearing_host::ann::pipeline::{load_samples, split_samples, train_model};
 use bearing_host::ann::sweep::{heading, markdown, run_sweep, SweepConfig};
-use bearing_host::ann::train::TrainOptions;
+use bearing_host::ann::train::{Solver, TrainOptions};
 use clap::{Args, Subcommand};
 
 /// `bearing train …`
@@ -58,6 +58,10 @@ struct Common {
     /// Random restarts (best validation kept, 1 … 100).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=100))]
     restarts: u64,
+    /// Levenberg–Marquardt implementation: `minpack` (the crate; trains the committed model) or
+    /// `trainlm` (MATLAB's normal equations; far faster for nets of hundreds of parameters).
+    #[arg(long, value_enum, default_value = "minpack")]
+    solver: Solver,
 }
 
 impl Common {
@@ -75,6 +79,7 @@ impl Common {
             patience: self.patience as usize,
             seed: self.seed,
             restarts: self.restarts as usize,
+            solver: self.solver,
         })
     }
 }
