@@ -2,6 +2,8 @@
 //! tanh/logistic/ReLU × 600–5000 samples): train each combination on the first `N` samples of a
 //! dataset (own 70/15/15 split) and tabulate its held-out test accuracy and training time.
 
+use std::io::IsTerminal;
+
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::{Deserialize, Serialize};
 
@@ -82,6 +84,7 @@ pub fn run_sweep(samples: &Samples, config: &SweepConfig, progress: bool) -> Vec
         .filter(|&n| n <= samples.len())
         .collect();
     let total = sizes.len() * config.layers.len() * config.neurons.len() * config.activations.len();
+    let log_lines = progress && !std::io::stderr().is_terminal();
     let bar = if progress {
         ProgressBar::new(total as u64)
     } else {
@@ -108,6 +111,18 @@ pub fn run_sweep(samples: &Samples, config: &SweepConfig, progress: bool) -> Vec
                     };
                     let t = train(&tr, &va, &options);
                     let m = t.evaluate(&te);
+                    if log_lines {
+                        // No terminal to draw the bar on (a background run): one line per
+                        // network, so the log shows progress and survives an interruption.
+                        eprintln!(
+                            "{}/{total} {layers}x{neurons} {} n={n}: {} epochs, {:.1} s, h_c p99 {:.3} %",
+                            rows.len() + 1,
+                            activation.name(),
+                            t.epochs,
+                            t.train_seconds,
+                            m.central.p99_pct
+                        );
+                    }
                     rows.push(SweepRow {
                         layers,
                         neurons,
