@@ -35,6 +35,8 @@
 //! statics. The bit identity with the plain i64 formula is tested in `super::int` on the
 //! test set, random and extreme inputs.
 
+use super::exact_lut::{LutF64, ROUNDER_OFFSET_CODE};
+
 /// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ in magnitude to an integer
 /// (round half to even), and the low 32 bits of the sum are that integer in two's complement.
 const ROUNDER: f64 = 6_755_399_441_055_744.0;
@@ -131,12 +133,15 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
     /// two partial sums, halving the chain of dependent additions (the network is
     /// latency-bound: each layer waits for the previous one); exact sums do not depend on the
     /// order.
+    ///
+    /// The inputs are the i16 codes, or the same integers already in f64 (the activations
+    /// [`super::exact_lut`] hands on).
     #[inline(always)]
-    pub fn accumulate(&self, x: &[i16; I]) -> [f64; O] {
+    pub fn accumulate<T: Copy + Into<f64>>(&self, x: &[T; I]) -> [f64; O] {
         let mut even = self.bias;
         let mut odd = [0.0; O];
         for (k, (v, col)) in x.iter().zip(&self.weights).enumerate() {
-            let v = f64::from(*v);
+            let v: f64 = (*v).into();
             let acc = if k % 2 == 0 { &mut even } else { &mut odd };
             for (a, w) in acc.iter_mut().zip(col) {
                 *a += w * v;
@@ -151,6 +156,14 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
     /// `requantize(A, m, s)` of an exact accumulator (module doc, steps 1–3).
     #[inline(always)]
     pub fn requantize_bits(&self, acc: f64) -> u64 {
+        self.requantize_rounded(acc, ROUNDER).to_bits()
+    }
+
+    /// `rounder + requantize(A, m, s)` as an f64, for a `rounder` of 1.5·2⁵² plus an integer
+    /// (module doc, step 3: the last sum is never a tie, so it rounds to the nearest integer
+    /// whatever integer offset the constant carries, as long as the sum stays in [2⁵², 2⁵³)).
+    #[inline(always)]
+    pub fn requantize_rounded(&self, acc: f64, rounder: f64) -> f64 {
         // `if` forms compile to minpd/maxpd (no NaN handling needed: A is an integer).
         let a = if acc < self.acc_min {
             self.acc_min
@@ -163,7 +176,7 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
         // u − ROUNDER is an exact integer in [−2⁵³, −2⁵²]; adding the rounded value cancels
         // ROUNDER exactly, leaving u + ⌊v/2¹²⌋.
         let sum = (a * self.multiplier_high - ROUNDER) + rounded_floor_z;
-        ((sum + 0.5) * self.outer_scale + ROUNDER).to_bits()
+        (sum + 0.5) * self.outer_scale + rounder
     }
 
     /// Requantised accumulators, bit for bit those of the i64 path, each in the low 16 bits
@@ -175,10 +188,34 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
     /// scalar table lookups reload straight from the vector stores (narrowing them to i16
     /// first cost ≈ 20 ns: 2-byte reloads of a 16-byte store).
     #[inline(never)]
-    pub fn forward_linear_bits(&self, x: &[i16; I]) -> [u64; O] {
+    pub fn forward_linear_bits<T: Copy + Into<f64>>(&self, x: &[T; I]) -> [u64; O] {
         let mut out = [0u64; O];
         for (q, a) in out.iter_mut().zip(self.accumulate(x)) {
             *q = self.requantize_bits(a);
+        }
+        out
+    }
+
+    /// A hidden layer with a table activation on f64 activations: accumulation,
+    /// requantisation to `1.5·2⁵² + 32768 + z`, and the exact look-up of
+    /// [`super::exact_lut`], all in f64 lanes. Bit for bit `lut_lookup(requantize(A))`.
+    #[inline(never)]
+    pub fn forward_lut_lanes<T: Copy + Into<f64>>(&self, x: &[T; I], table: &LutF64) -> [f64; O] {
+        let mut out = [0.0; O];
+        for (y, a) in out.iter_mut().zip(self.accumulate(x)) {
+            *y = table.lookup(self.requantize_rounded(a, ROUNDER_OFFSET_CODE));
+        }
+        out
+    }
+
+    /// A hidden ReLU layer on f64 activations: `max(requantize(A), 0)` as an exact f64
+    /// (`1.5·2⁵² + q − 1.5·2⁵²` is the integer `q`).
+    #[inline(never)]
+    pub fn forward_relu_lanes<T: Copy + Into<f64>>(&self, x: &[T; I]) -> [f64; O] {
+        let mut out = [0.0; O];
+        for (y, a) in out.iter_mut().zip(self.accumulate(x)) {
+            let q = self.requantize_rounded(a, ROUNDER) - ROUNDER;
+            *y = if q > 0.0 { q } else { 0.0 };
         }
         out
     }

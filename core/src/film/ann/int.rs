@@ -77,6 +77,49 @@ pub fn lut_lookup(table: &Lut, z: i16) -> i16 {
     (a + step) as i16
 }
 
+/// The activations between layers: the i16 codes, which the host path (x86-64) carries as the
+/// same integers in f64 lanes (`exact_lut`), so they never make an i16 round trip there.
+#[cfg(target_arch = "x86_64")]
+pub type Carried<const N: usize> = [f64; N];
+/// The activations between layers: the i16 codes (x86-64 carries them in f64 lanes).
+#[cfg(not(target_arch = "x86_64"))]
+pub type Carried<const N: usize> = [i16; N];
+
+/// The network's quantised inputs as [`Carried`] activations (exact conversions).
+#[inline(always)]
+pub fn carry<const N: usize>(x: &[i16; N]) -> Carried<N> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        x.map(f64::from)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        *x
+    }
+}
+
+/// An activation table in the form the layers read it: on x86-64 the exact f64 copy of
+/// `exact_lut` (built at compile time), elsewhere the i16 table itself.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LutLanes {
+    #[cfg(target_arch = "x86_64")]
+    exact: super::exact_lut::LutF64,
+    #[cfg(not(target_arch = "x86_64"))]
+    table: &'static Lut,
+}
+
+impl LutLanes {
+    /// The layers' form of a table static (a `const fn`: the model's is a static too).
+    pub const fn new(table: &'static Lut) -> Self {
+        Self {
+            #[cfg(target_arch = "x86_64")]
+            exact: super::exact_lut::LutF64::new(table),
+            #[cfg(not(target_arch = "x86_64"))]
+            table,
+        }
+    }
+}
+
 /// A quantised dense layer with `I` inputs and `O` outputs. Build it with [`DenseInt::new`]
 /// (the generated layers are statics): on x86-64 it also holds the converted copy the host path
 /// computes with, so a field changed afterwards would not reach that path.
@@ -174,6 +217,45 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
         }
     }
 
+    /// Hidden layer with a table activation on [`Carried`] activations: bit for bit
+    /// [`Self::forward_lut`] (on x86-64 entirely in exact f64 lanes, `exact_lut`).
+    #[inline]
+    pub fn lut_layer(&self, x: &Carried<I>, table: &LutLanes) -> Carried<O> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            self.exact.forward_lut_lanes(x, &table.exact)
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        self.forward_lut(x, table.table)
+    }
+
+    /// Hidden ReLU layer on [`Carried`] activations: bit for bit [`Self::forward_relu`].
+    #[inline]
+    pub fn relu_layer(&self, x: &Carried<I>) -> Carried<O> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            self.exact.forward_relu_lanes(x)
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        self.forward_relu(x)
+    }
+
+    /// Output layer on [`Carried`] activations: bit for bit [`Self::forward_linear`].
+    #[inline]
+    pub fn output_layer(&self, x: &Carried<I>) -> [i16; O] {
+        #[cfg(target_arch = "x86_64")]
+        {
+            let mut out = [0i16; O];
+            for (o, q) in out.iter_mut().zip(self.exact.forward_linear_bits(x)) {
+                // The low 16 bits hold the code (`ExactF64::requantize_bits`).
+                *o = q as i16;
+            }
+            out
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        self.forward_linear(x)
+    }
+
     /// Hidden ReLU layer (requantised straight to the activation scale).
     #[inline]
     pub fn forward_relu(&self, x: &[i16; I]) -> [i16; O] {
@@ -229,6 +311,53 @@ mod tests {
             assert_eq!(l.forward_linear(&x), l.forward_linear_i64(&x), "{x:?}");
             let l = &model::INT_LAYER_2;
             assert_eq!(l.forward_linear(&x), l.forward_linear_i64(&x), "{x:?}");
+        }
+    }
+
+    /// The layers on [`Carried`] activations (exact f64 lanes on x86-64) give the codes of
+    /// the plain i64 definition — `forward_linear_i64`, then `lut_lookup` or `max(0, ·)` —
+    /// for every layer of the compiled model, fed from the quantised inputs and, for the
+    /// later layers, from the carried output of the layer before (reference: the i64 path,
+    /// the definition the Cortex-M4 runs).
+    #[test]
+    fn carried_layers_give_the_i64_codes() {
+        let table = LutLanes::new(&model::LUT);
+        let lut = |mut z: [i16; 10]| {
+            for v in z.iter_mut() {
+                *v = lut_lookup(&model::LUT, *v);
+            }
+            z
+        };
+        let relu = |z: [i16; 10]| z.map(|v| v.max(0));
+        for x in inputs::<5>(3000) {
+            let l = &model::INT_LAYER_0;
+            let want = lut(l.forward_linear_i64(&x));
+            let got = l.lut_layer(&carry(&x), &table);
+            assert_eq!(got, carry(&want), "{x:?}");
+            let want_relu = relu(l.forward_linear_i64(&x));
+            assert_eq!(l.relu_layer(&carry(&x)), carry(&want_relu), "{x:?}");
+            // The next layers from the carried activations.
+            let l1 = &model::INT_LAYER_1;
+            assert_eq!(
+                l1.lut_layer(&got, &table),
+                carry(&lut(l1.forward_linear_i64(&want))),
+                "{x:?}"
+            );
+            let l2 = &model::INT_LAYER_2;
+            assert_eq!(l2.output_layer(&got), l2.forward_linear_i64(&want), "{x:?}");
+        }
+        for x in inputs::<10>(3000) {
+            let l = &model::INT_LAYER_1;
+            let want = lut(l.forward_linear_i64(&x));
+            assert_eq!(l.lut_layer(&carry(&x), &table), carry(&want), "{x:?}");
+            let want_relu = relu(l.forward_linear_i64(&x));
+            assert_eq!(l.relu_layer(&carry(&x)), carry(&want_relu), "{x:?}");
+            let l = &model::INT_LAYER_2;
+            assert_eq!(
+                l.output_layer(&carry(&x)),
+                l.forward_linear_i64(&x),
+                "{x:?}"
+            );
         }
     }
 

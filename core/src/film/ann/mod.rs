@@ -21,6 +21,8 @@
 
 #[cfg(target_arch = "x86_64")]
 mod exact_f64;
+#[cfg(target_arch = "x86_64")]
+mod exact_lut;
 pub mod fastmath;
 #[path = "f32.rs"]
 pub mod float;
