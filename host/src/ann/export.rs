@@ -97,7 +97,7 @@ pub fn render(model: &ModelFile) -> Result<String> {
     )?;
     writeln!(o)?;
     writeln!(o, "use super::float::{{Activation, DenseF32}};")?;
-    writeln!(o, "use super::int::{{carry, DenseInt, Lut, LutLanes}};")?;
+    writeln!(o, "use super::int::{{DenseInt, Lut, LutLanes}};")?;
     writeln!(o, "use super::{{DomainLimits, InputSet, TargetForm}};")?;
     writeln!(o)?;
     writeln!(
@@ -297,23 +297,29 @@ pub fn render(model: &ModelFile) -> Result<String> {
             )?;
         }
         writeln!(o, "];")?;
-        writeln!(o, "/// The activation table as the layers read it.")?;
+        writeln!(
+            o,
+            "/// The host path's copy of the activation table (`int::LutLanes`)."
+        )?;
         writeln!(o, "pub static LUT_LANES: LutLanes = LutLanes::new(&LUT);")?;
     }
     writeln!(o)?;
     writeln!(o, "/// The integer network on quantised features.")?;
     writeln!(o, "#[inline]")?;
     writeln!(o, "pub fn forward_int(x: &[i16; N_IN]) -> [i16; 2] {{")?;
-    writeln!(o, "    let a = carry(x);")?;
     for k in 0..n_layers {
+        let src = if k == 0 { "x" } else { "&a" };
         if k + 1 < n_layers {
             if q.activation == Activation::Relu {
-                writeln!(o, "    let a = INT_LAYER_{k}.relu_layer(&a);")?;
+                writeln!(o, "    let a = INT_LAYER_{k}.relu_layer({src});")?;
             } else {
-                writeln!(o, "    let a = INT_LAYER_{k}.lut_layer(&a, &LUT_LANES);")?;
+                writeln!(
+                    o,
+                    "    let a = INT_LAYER_{k}.lut_layer({src}, &LUT, &LUT_LANES);"
+                )?;
             }
         } else {
-            writeln!(o, "    INT_LAYER_{k}.output_layer(&a)")?;
+            writeln!(o, "    INT_LAYER_{k}.output_layer({src})")?;
         }
     }
     writeln!(o, "}}")?;

@@ -129,28 +129,46 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
         }
     }
 
-    /// The exact accumulators `b + Σ w·x`, the outputs as lanes. Even and odd inputs go to
-    /// two partial sums, halving the chain of dependent additions (the network is
-    /// latency-bound: each layer waits for the previous one); exact sums do not depend on the
-    /// order.
+    /// The exact accumulators `b + Σ w·x`, the outputs as lanes, summed as a pairwise tree:
+    /// all products at once, then `⌈log₂ I⌉` levels of independent additions (the bias joins
+    /// the last product, which waits least in the tree). The network is latency-bound — each
+    /// layer waits for the previous one — and a tree is the shortest chain of dependent
+    /// additions; every partial sum is a sum of some of the terms, below the row bound 2⁴⁰, so
+    /// it is exact and the order does not change the result (module doc).
     ///
     /// The inputs are the i16 codes, or the same integers already in f64 (the activations
     /// [`super::exact_lut`] hands on).
     #[inline(always)]
     pub fn accumulate<T: Copy + Into<f64>>(&self, x: &[T; I]) -> [f64; O] {
-        let mut even = self.bias;
-        let mut odd = [0.0; O];
-        for (k, (v, col)) in x.iter().zip(&self.weights).enumerate() {
+        let mut terms = [[0.0; O]; I];
+        for ((term, v), col) in terms.iter_mut().zip(x).zip(&self.weights) {
             let v: f64 = (*v).into();
-            let acc = if k % 2 == 0 { &mut even } else { &mut odd };
-            for (a, w) in acc.iter_mut().zip(col) {
-                *a += w * v;
+            for (p, w) in term.iter_mut().zip(col) {
+                *p = w * v;
             }
         }
-        for (e, o) in even.iter_mut().zip(odd) {
-            *e += o;
+        let Some(last) = terms.last_mut() else {
+            return self.bias;
+        };
+        for (p, b) in last.iter_mut().zip(&self.bias) {
+            *p += b;
         }
-        even
+        let mut stride = 1;
+        while stride < I {
+            let mut i = 0;
+            while i + stride < I {
+                if let Some((head, tail)) = terms.split_at_mut_checked(i + stride) {
+                    if let (Some(a), Some(b)) = (head.get_mut(i), tail.first()) {
+                        for (a, b) in a.iter_mut().zip(b) {
+                            *a += b;
+                        }
+                    }
+                }
+                i += 2 * stride;
+            }
+            stride *= 2;
+        }
+        terms.first().copied().unwrap_or(self.bias)
     }
 
     /// `requantize(A, m, s)` of an exact accumulator (module doc, steps 1–3).

@@ -85,37 +85,30 @@ pub type Carried<const N: usize> = [f64; N];
 #[cfg(not(target_arch = "x86_64"))]
 pub type Carried<const N: usize> = [i16; N];
 
-/// The network's quantised inputs as [`Carried`] activations (exact conversions).
-#[inline(always)]
-pub fn carry<const N: usize>(x: &[i16; N]) -> Carried<N> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        x.map(f64::from)
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        *x
-    }
-}
+/// What a layer of the host path accepts as input codes: the network's i16 inputs or the f64
+/// [`Carried`] activations, the same integers.
+#[cfg(target_arch = "x86_64")]
+pub trait Code: Copy + Into<f64> {}
+#[cfg(target_arch = "x86_64")]
+impl Code for i16 {}
+#[cfg(target_arch = "x86_64")]
+impl Code for f64 {}
 
-/// An activation table in the form the layers read it: on x86-64 the exact f64 copy of
-/// `exact_lut` (built at compile time), elsewhere the i16 table itself.
+/// The host path's copy of an activation table: on x86-64 the exact f64 pairs of `exact_lut`
+/// (built at compile time); elsewhere empty, the layers reading the i16 table itself.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LutLanes {
     #[cfg(target_arch = "x86_64")]
     exact: super::exact_lut::LutF64,
-    #[cfg(not(target_arch = "x86_64"))]
-    table: &'static Lut,
 }
 
 impl LutLanes {
-    /// The layers' form of a table static (a `const fn`: the model's is a static too).
-    pub const fn new(table: &'static Lut) -> Self {
+    /// The host path's copy of `table` (a `const fn`: the model's is a static).
+    #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))]
+    pub const fn new(table: &Lut) -> Self {
         Self {
             #[cfg(target_arch = "x86_64")]
             exact: super::exact_lut::LutF64::new(table),
-            #[cfg(not(target_arch = "x86_64"))]
-            table,
         }
     }
 }
@@ -217,42 +210,55 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
         }
     }
 
-    /// Hidden layer with a table activation on [`Carried`] activations: bit for bit
-    /// [`Self::forward_lut`] (on x86-64 entirely in exact f64 lanes, `exact_lut`).
-    #[inline]
-    pub fn lut_layer(&self, x: &Carried<I>, table: &LutLanes) -> Carried<O> {
-        #[cfg(target_arch = "x86_64")]
-        {
-            self.exact.forward_lut_lanes(x, &table.exact)
-        }
-        #[cfg(not(target_arch = "x86_64"))]
-        self.forward_lut(x, table.table)
+    /// Hidden layer with a table activation on the network's inputs or [`Carried`]
+    /// activations: bit for bit [`Self::forward_lut`] — on x86-64 entirely in exact f64 lanes
+    /// with `lanes` (`exact_lut`), elsewhere that very function with `table`.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub fn lut_layer<T: Code>(&self, x: &[T; I], _table: &Lut, lanes: &LutLanes) -> Carried<O> {
+        self.exact.forward_lut_lanes(x, &lanes.exact)
     }
 
-    /// Hidden ReLU layer on [`Carried`] activations: bit for bit [`Self::forward_relu`].
-    #[inline]
-    pub fn relu_layer(&self, x: &Carried<I>) -> Carried<O> {
-        #[cfg(target_arch = "x86_64")]
-        {
-            self.exact.forward_relu_lanes(x)
-        }
-        #[cfg(not(target_arch = "x86_64"))]
+    /// Hidden layer with a table activation: [`Self::forward_lut`] (x86-64 runs it in f64
+    /// lanes).
+    #[cfg(not(target_arch = "x86_64"))]
+    #[inline(always)]
+    pub fn lut_layer(&self, x: &[i16; I], table: &Lut, _lanes: &LutLanes) -> Carried<O> {
+        self.forward_lut(x, table)
+    }
+
+    /// Hidden ReLU layer on the network's inputs or [`Carried`] activations: bit for bit
+    /// [`Self::forward_relu`] (on x86-64 in exact f64 lanes).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub fn relu_layer<T: Code>(&self, x: &[T; I]) -> Carried<O> {
+        self.exact.forward_relu_lanes(x)
+    }
+
+    /// Hidden ReLU layer: [`Self::forward_relu`] (x86-64 runs it in f64 lanes).
+    #[cfg(not(target_arch = "x86_64"))]
+    #[inline(always)]
+    pub fn relu_layer(&self, x: &[i16; I]) -> Carried<O> {
         self.forward_relu(x)
     }
 
-    /// Output layer on [`Carried`] activations: bit for bit [`Self::forward_linear`].
-    #[inline]
-    pub fn output_layer(&self, x: &Carried<I>) -> [i16; O] {
-        #[cfg(target_arch = "x86_64")]
-        {
-            let mut out = [0i16; O];
-            for (o, q) in out.iter_mut().zip(self.exact.forward_linear_bits(x)) {
-                // The low 16 bits hold the code (`ExactF64::requantize_bits`).
-                *o = q as i16;
-            }
-            out
+    /// Output layer on the network's inputs or [`Carried`] activations: bit for bit
+    /// [`Self::forward_linear`] (on x86-64 in exact f64 lanes).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub fn output_layer<T: Code>(&self, x: &[T; I]) -> [i16; O] {
+        let mut out = [0i16; O];
+        for (o, q) in out.iter_mut().zip(self.exact.forward_linear_bits(x)) {
+            // The low 16 bits hold the code (`ExactF64::requantize_bits`).
+            *o = q as i16;
         }
-        #[cfg(not(target_arch = "x86_64"))]
+        out
+    }
+
+    /// Output layer: [`Self::forward_linear`] (x86-64 runs it in f64 lanes).
+    #[cfg(not(target_arch = "x86_64"))]
+    #[inline(always)]
+    pub fn output_layer(&self, x: &[i16; I]) -> [i16; O] {
         self.forward_linear(x)
     }
 
@@ -321,7 +327,10 @@ mod tests {
     /// the definition the Cortex-M4 runs).
     #[test]
     fn carried_layers_give_the_i64_codes() {
-        let table = LutLanes::new(&model::LUT);
+        let lanes = LutLanes::new(&model::LUT);
+        let table = &model::LUT;
+        // The i16 codes as the layers carry them.
+        let carry = |x: &[i16; 10]| -> Carried<10> { x.map(Into::into) };
         let lut = |mut z: [i16; 10]| {
             for v in z.iter_mut() {
                 *v = lut_lookup(&model::LUT, *v);
@@ -332,14 +341,14 @@ mod tests {
         for x in inputs::<5>(3000) {
             let l = &model::INT_LAYER_0;
             let want = lut(l.forward_linear_i64(&x));
-            let got = l.lut_layer(&carry(&x), &table);
+            let got = l.lut_layer(&x, table, &lanes);
             assert_eq!(got, carry(&want), "{x:?}");
             let want_relu = relu(l.forward_linear_i64(&x));
-            assert_eq!(l.relu_layer(&carry(&x)), carry(&want_relu), "{x:?}");
+            assert_eq!(l.relu_layer(&x), carry(&want_relu), "{x:?}");
             // The next layers from the carried activations.
             let l1 = &model::INT_LAYER_1;
             assert_eq!(
-                l1.lut_layer(&got, &table),
+                l1.lut_layer(&got, table, &lanes),
                 carry(&lut(l1.forward_linear_i64(&want))),
                 "{x:?}"
             );
@@ -349,15 +358,11 @@ mod tests {
         for x in inputs::<10>(3000) {
             let l = &model::INT_LAYER_1;
             let want = lut(l.forward_linear_i64(&x));
-            assert_eq!(l.lut_layer(&carry(&x), &table), carry(&want), "{x:?}");
+            assert_eq!(l.lut_layer(&x, table, &lanes), carry(&want), "{x:?}");
             let want_relu = relu(l.forward_linear_i64(&x));
-            assert_eq!(l.relu_layer(&carry(&x)), carry(&want_relu), "{x:?}");
+            assert_eq!(l.relu_layer(&x), carry(&want_relu), "{x:?}");
             let l = &model::INT_LAYER_2;
-            assert_eq!(
-                l.output_layer(&carry(&x)),
-                l.forward_linear_i64(&x),
-                "{x:?}"
-            );
+            assert_eq!(l.output_layer(&x), l.forward_linear_i64(&x), "{x:?}");
         }
     }
 

@@ -4,7 +4,7 @@
 //! Network: 5 inputs → 10 → 10 → 2 (tanh hidden, linear output); 16-bit weights.
 
 use super::float::{Activation, DenseF32};
-use super::int::{carry, DenseInt, Lut, LutLanes};
+use super::int::{DenseInt, Lut, LutLanes};
 use super::{DomainLimits, InputSet, TargetForm};
 
 /// Fingerprint of the model parts this file was generated from.
@@ -209,14 +209,13 @@ pub static LUT: Lut = [
     32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767,
     32767,
 ];
-/// The activation table as the layers read it.
+/// The host path's copy of the activation table (`int::LutLanes`).
 pub static LUT_LANES: LutLanes = LutLanes::new(&LUT);
 
 /// The integer network on quantised features.
 #[inline]
 pub fn forward_int(x: &[i16; N_IN]) -> [i16; 2] {
-    let a = carry(x);
-    let a = INT_LAYER_0.lut_layer(&a, &LUT_LANES);
-    let a = INT_LAYER_1.lut_layer(&a, &LUT_LANES);
+    let a = INT_LAYER_0.lut_layer(x, &LUT, &LUT_LANES);
+    let a = INT_LAYER_1.lut_layer(&a, &LUT, &LUT_LANES);
     INT_LAYER_2.output_layer(&a)
 }
