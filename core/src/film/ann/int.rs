@@ -178,7 +178,7 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
         {
             let mut out = [0i16; O];
             for (o, q) in out.iter_mut().zip(self.exact.forward_linear_bits(x)) {
-                // The low 16 bits hold the code (`ExactF64::requantize_bits`).
+                // The low 16 bits hold the code (`ExactF64::forward_linear_bits`).
                 *o = q as i16;
             }
             out
@@ -249,7 +249,7 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
     pub fn output_layer<T: Code>(&self, x: &[T; I]) -> [i16; O] {
         let mut out = [0i16; O];
         for (o, q) in out.iter_mut().zip(self.exact.forward_linear_bits(x)) {
-            // The low 16 bits hold the code (`ExactF64::requantize_bits`).
+            // The low 16 bits hold the code (`ExactF64::forward_linear_bits`).
             *o = q as i16;
         }
         out
