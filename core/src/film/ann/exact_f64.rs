@@ -53,6 +53,7 @@
 //! test set, random and extreme inputs.
 
 use super::exact_lut::{LutF64, ROUNDER_OFFSET_CODE};
+use super::int::Code;
 
 /// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ in magnitude to an integer
 /// (round half to even), and the low 32 bits of the sum are that integer in two's complement.
@@ -161,10 +162,10 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
     /// The inputs are the i16 codes, or the same integers already in f64 (the activations
     /// [`super::exact_lut`] hands on).
     #[inline(always)]
-    pub fn accumulate<T: Copy + Into<f64>>(&self, x: &[T; I]) -> [f64; O] {
+    pub fn accumulate<T: Code>(&self, x: &[T; I]) -> [f64; O] {
         let mut terms = [[0.0; O]; I];
         for ((term, v), col) in terms.iter_mut().zip(x).zip(&self.weights) {
-            let v: f64 = (*v).into();
+            let v = T::load(v);
             for (p, w) in term.iter_mut().zip(col) {
                 *p = w * v;
             }
@@ -259,7 +260,7 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
     /// scalar table lookups reload straight from the vector stores (narrowing them to i16
     /// first cost ≈ 20 ns: 2-byte reloads of a 16-byte store).
     #[inline(never)]
-    pub fn forward_linear_bits<T: Copy + Into<f64>>(&self, x: &[T; I]) -> [u64; O] {
+    pub fn forward_linear_bits<T: Code>(&self, x: &[T; I]) -> [u64; O] {
         self.requantize_all(self.accumulate(x), ROUNDER)
             .map(f64::to_bits)
     }
@@ -268,7 +269,7 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
     /// requantisation to `1.5·2⁵² + 32768 + z`, and the exact look-up of
     /// [`super::exact_lut`], all in f64 lanes. Bit for bit `lut_lookup(requantize(A))`.
     #[inline(never)]
-    pub fn forward_lut_lanes<T: Copy + Into<f64>>(&self, x: &[T; I], table: &LutF64) -> [f64; O] {
+    pub fn forward_lut_lanes<T: Code>(&self, x: &[T; I], table: &LutF64) -> [f64; O] {
         self.requantize_all(self.accumulate(x), ROUNDER_OFFSET_CODE)
             .map(|r| table.lookup(r))
     }
@@ -276,7 +277,7 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
     /// A hidden ReLU layer on f64 activations: `max(requantize(A), 0)` as an exact f64
     /// (`1.5·2⁵² + q − 1.5·2⁵²` is the integer `q`).
     #[inline(never)]
-    pub fn forward_relu_lanes<T: Copy + Into<f64>>(&self, x: &[T; I]) -> [f64; O] {
+    pub fn forward_relu_lanes<T: Code>(&self, x: &[T; I]) -> [f64; O] {
         self.requantize_all(self.accumulate(x), ROUNDER).map(|r| {
             let q = r - ROUNDER;
             if q > 0.0 {
