@@ -15,8 +15,10 @@
 //! Cortex-M4 runs it as written (fixed cost, no data-dependent branch). On x86-64 the same
 //! integers are carried in f64 lanes (`exact_f64`): SSE2 has no 64-bit integer
 //! multiply, while every partial sum here is an integer below 2⁴⁰ and thus exact in f64, and
-//! the requantisation is rebuilt from exact f64 steps — the codes are identical, which the tests
-//! check against the i64 formula. All arithmetic is wrapping, saturating or exact, so nothing
+//! the requantisation is rebuilt from exact f64 steps, and the table look-up too (`exact_lut`),
+//! so the activations stay f64 from layer to layer ([`Carried`], [`DenseInt::lut_layer`], the
+//! chain the generated `forward_int` runs) — the codes are identical, which the tests check
+//! against the i64 formula. All arithmetic is wrapping, saturating or exact, so nothing
 //! here can panic.
 
 /// Number of table segments is `2^LUT_SEGMENT_BITS`.
