@@ -97,7 +97,7 @@ pub fn render(model: &ModelFile) -> Result<String> {
     )?;
     writeln!(o)?;
     writeln!(o, "use super::float::{{Activation, DenseF32}};")?;
-    writeln!(o, "use super::int::{{DenseInt, Lut}};")?;
+    writeln!(o, "use super::int::{{DenseInt, Lut, LutLanes}};")?;
     writeln!(o, "use super::{{DomainLimits, InputSet, TargetForm}};")?;
     writeln!(o)?;
     writeln!(
@@ -297,6 +297,11 @@ pub fn render(model: &ModelFile) -> Result<String> {
             )?;
         }
         writeln!(o, "];")?;
+        writeln!(
+            o,
+            "/// The host path's copy of the activation table (`int::LutLanes`)."
+        )?;
+        writeln!(o, "pub static LUT_LANES: LutLanes = LutLanes::new(&LUT);")?;
     }
     writeln!(o)?;
     writeln!(o, "/// The integer network on quantised features.")?;
@@ -306,12 +311,15 @@ pub fn render(model: &ModelFile) -> Result<String> {
         let src = if k == 0 { "x" } else { "&a" };
         if k + 1 < n_layers {
             if q.activation == Activation::Relu {
-                writeln!(o, "    let a = INT_LAYER_{k}.forward_relu({src});")?;
+                writeln!(o, "    let a = INT_LAYER_{k}.relu_layer({src});")?;
             } else {
-                writeln!(o, "    let a = INT_LAYER_{k}.forward_lut({src}, &LUT);")?;
+                writeln!(
+                    o,
+                    "    let a = INT_LAYER_{k}.lut_layer({src}, &LUT, &LUT_LANES);"
+                )?;
             }
         } else {
-            writeln!(o, "    INT_LAYER_{k}.forward_linear({src})")?;
+            writeln!(o, "    INT_LAYER_{k}.output_layer({src})")?;
         }
     }
     writeln!(o, "}}")?;

@@ -15,8 +15,10 @@
 //! Cortex-M4 runs it as written (fixed cost, no data-dependent branch). On x86-64 the same
 //! integers are carried in f64 lanes (`exact_f64`): SSE2 has no 64-bit integer
 //! multiply, while every partial sum here is an integer below 2⁴⁰ and thus exact in f64, and
-//! the requantisation is rebuilt from exact f64 steps — the codes are identical, which the tests
-//! check against the i64 formula. All arithmetic is wrapping, saturating or exact, so nothing
+//! the requantisation is rebuilt from exact f64 steps, and the table look-up too (`exact_lut`),
+//! so the activations stay f64 from layer to layer ([`Carried`], [`DenseInt::lut_layer`], the
+//! chain the generated `forward_int` runs) — the codes are identical, which the tests check
+//! against the i64 formula. All arithmetic is wrapping, saturating or exact, so nothing
 //! here can panic.
 
 /// Number of table segments is `2^LUT_SEGMENT_BITS`.
@@ -75,6 +77,62 @@ pub fn lut_lookup(table: &Lut, z: i16) -> i16 {
     let b = i32::from(table.get(idx + 1).copied().unwrap_or(0));
     let step = ((b - a) * frac + (1 << (CODES_PER_SEGMENT_BITS - 1))) >> CODES_PER_SEGMENT_BITS;
     (a + step) as i16
+}
+
+/// The activations between layers: the i16 codes, which the host path (x86-64) carries as the
+/// same integers in f64 lanes (`exact_lut`), so they never make an i16 round trip there.
+#[cfg(target_arch = "x86_64")]
+pub type Carried<const N: usize> = [f64; N];
+/// The activations between layers: the i16 codes (x86-64 carries them in f64 lanes).
+#[cfg(not(target_arch = "x86_64"))]
+pub type Carried<const N: usize> = [i16; N];
+
+/// What a layer of the host path accepts as input codes: the network's i16 inputs or the f64
+/// [`Carried`] activations, the same integers.
+#[cfg(target_arch = "x86_64")]
+pub trait Code: Copy {
+    /// The code at `v` as an f64 (exact).
+    fn load(v: &Self) -> f64;
+}
+#[cfg(target_arch = "x86_64")]
+impl Code for i16 {
+    #[inline(always)]
+    fn load(v: &Self) -> f64 {
+        f64::from(*v)
+    }
+}
+#[cfg(target_arch = "x86_64")]
+impl Code for f64 {
+    /// An 8-byte load, never widened: with a plain read LLVM loads each activation as the low
+    /// half of a 16-byte load, which for every odd input straddles two of the previous layer's
+    /// 16-byte stores, and store-to-load forwarding cannot serve a load that straddles stores —
+    /// it waits for them to reach the cache (≈ 4 ns per network in the `film_ann` bench).
+    /// A volatile read is exactly one load of exactly this width.
+    #[inline(always)]
+    fn load(v: &Self) -> f64 {
+        // SAFETY: `v` is a reference, so the pointer is valid, aligned and initialised for
+        // the read.
+        unsafe { core::ptr::read_volatile(v) }
+    }
+}
+
+/// The host path's copy of an activation table: on x86-64 the exact f64 pairs of `exact_lut`
+/// (built at compile time); elsewhere empty, the layers reading the i16 table itself.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LutLanes {
+    #[cfg(target_arch = "x86_64")]
+    exact: super::exact_lut::LutF64,
+}
+
+impl LutLanes {
+    /// The host path's copy of `table` (a `const fn`: the model's is a static).
+    #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))]
+    pub const fn new(table: &Lut) -> Self {
+        Self {
+            #[cfg(target_arch = "x86_64")]
+            exact: super::exact_lut::LutF64::new(table),
+        }
+    }
 }
 
 /// A quantised dense layer with `I` inputs and `O` outputs. Build it with [`DenseInt::new`]
@@ -142,7 +200,7 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
         {
             let mut out = [0i16; O];
             for (o, q) in out.iter_mut().zip(self.exact.forward_linear_bits(x)) {
-                // The low 16 bits hold the code (`ExactF64::requantize_bits`).
+                // The low 16 bits hold the code (`ExactF64::forward_linear_bits`).
                 *o = q as i16;
             }
             out
@@ -172,6 +230,58 @@ impl<const I: usize, const O: usize> DenseInt<I, O> {
             }
             z
         }
+    }
+
+    /// Hidden layer with a table activation on the network's inputs or [`Carried`]
+    /// activations: bit for bit [`Self::forward_lut`] — on x86-64 entirely in exact f64 lanes
+    /// with `lanes` (`exact_lut`), elsewhere that very function with `table`.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub fn lut_layer<T: Code>(&self, x: &[T; I], _table: &Lut, lanes: &LutLanes) -> Carried<O> {
+        self.exact.forward_lut_lanes(x, &lanes.exact)
+    }
+
+    /// Hidden layer with a table activation: [`Self::forward_lut`] (x86-64 runs it in f64
+    /// lanes).
+    #[cfg(not(target_arch = "x86_64"))]
+    #[inline(always)]
+    pub fn lut_layer(&self, x: &[i16; I], table: &Lut, _lanes: &LutLanes) -> Carried<O> {
+        self.forward_lut(x, table)
+    }
+
+    /// Hidden ReLU layer on the network's inputs or [`Carried`] activations: bit for bit
+    /// [`Self::forward_relu`] (on x86-64 in exact f64 lanes).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub fn relu_layer<T: Code>(&self, x: &[T; I]) -> Carried<O> {
+        self.exact.forward_relu_lanes(x)
+    }
+
+    /// Hidden ReLU layer: [`Self::forward_relu`] (x86-64 runs it in f64 lanes).
+    #[cfg(not(target_arch = "x86_64"))]
+    #[inline(always)]
+    pub fn relu_layer(&self, x: &[i16; I]) -> Carried<O> {
+        self.forward_relu(x)
+    }
+
+    /// Output layer on the network's inputs or [`Carried`] activations: bit for bit
+    /// [`Self::forward_linear`] (on x86-64 in exact f64 lanes).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub fn output_layer<T: Code>(&self, x: &[T; I]) -> [i16; O] {
+        let mut out = [0i16; O];
+        for (o, q) in out.iter_mut().zip(self.exact.forward_linear_bits(x)) {
+            // The low 16 bits hold the code (`ExactF64::forward_linear_bits`).
+            *o = q as i16;
+        }
+        out
+    }
+
+    /// Output layer: [`Self::forward_linear`] (x86-64 runs it in f64 lanes).
+    #[cfg(not(target_arch = "x86_64"))]
+    #[inline(always)]
+    pub fn output_layer(&self, x: &[i16; I]) -> [i16; O] {
+        self.forward_linear(x)
     }
 
     /// Hidden ReLU layer (requantised straight to the activation scale).
@@ -229,6 +339,52 @@ mod tests {
             assert_eq!(l.forward_linear(&x), l.forward_linear_i64(&x), "{x:?}");
             let l = &model::INT_LAYER_2;
             assert_eq!(l.forward_linear(&x), l.forward_linear_i64(&x), "{x:?}");
+        }
+    }
+
+    /// The layers on [`Carried`] activations (exact f64 lanes on x86-64) give the codes of
+    /// the plain i64 definition — `forward_linear_i64`, then `lut_lookup` or `max(0, ·)` —
+    /// for every layer of the compiled model, fed from the quantised inputs and, for the
+    /// later layers, from the carried output of the layer before (reference: the i64 path,
+    /// the definition the Cortex-M4 runs).
+    #[test]
+    fn carried_layers_give_the_i64_codes() {
+        let lanes = LutLanes::new(&model::LUT);
+        let table = &model::LUT;
+        // The i16 codes as the layers carry them.
+        let carry = |x: &[i16; 10]| -> Carried<10> { x.map(Into::into) };
+        let lut = |mut z: [i16; 10]| {
+            for v in z.iter_mut() {
+                *v = lut_lookup(&model::LUT, *v);
+            }
+            z
+        };
+        let relu = |z: [i16; 10]| z.map(|v| v.max(0));
+        for x in inputs::<5>(3000) {
+            let l = &model::INT_LAYER_0;
+            let want = lut(l.forward_linear_i64(&x));
+            let got = l.lut_layer(&x, table, &lanes);
+            assert_eq!(got, carry(&want), "{x:?}");
+            let want_relu = relu(l.forward_linear_i64(&x));
+            assert_eq!(l.relu_layer(&x), carry(&want_relu), "{x:?}");
+            // The next layers from the carried activations.
+            let l1 = &model::INT_LAYER_1;
+            assert_eq!(
+                l1.lut_layer(&got, table, &lanes),
+                carry(&lut(l1.forward_linear_i64(&want))),
+                "{x:?}"
+            );
+            let l2 = &model::INT_LAYER_2;
+            assert_eq!(l2.output_layer(&got), l2.forward_linear_i64(&want), "{x:?}");
+        }
+        for x in inputs::<10>(3000) {
+            let l = &model::INT_LAYER_1;
+            let want = lut(l.forward_linear_i64(&x));
+            assert_eq!(l.lut_layer(&x, table, &lanes), carry(&want), "{x:?}");
+            let want_relu = relu(l.forward_linear_i64(&x));
+            assert_eq!(l.relu_layer(&x), carry(&want_relu), "{x:?}");
+            let l = &model::INT_LAYER_2;
+            assert_eq!(l.output_layer(&x), l.forward_linear_i64(&x), "{x:?}");
         }
     }
 

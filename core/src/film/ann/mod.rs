@@ -21,6 +21,8 @@
 
 #[cfg(target_arch = "x86_64")]
 mod exact_f64;
+#[cfg(target_arch = "x86_64")]
+mod exact_lut;
 pub mod fastmath;
 #[path = "f32.rs"]
 pub mod float;
@@ -199,6 +201,59 @@ pub fn finish(p: &Prepared, y: [f32; 2], source: FilmSource) -> Film {
     }
 }
 
+/// The fallback films of step 5 alone (`finish`'s `fallback`, the same operations): they do not
+/// depend on the network, so the host's [`AnnInt`] computes them before it, where they run
+/// while the network's latency-bound chain waits instead of after it.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn fallback_films(p: &Prepared) -> [f32; 2] {
+    let mut films = [0.0f32; 2];
+    for (k, h) in films.iter_mut().enumerate() {
+        let reg = p.ln_regression_over_r.get(k).copied().unwrap_or(0.0);
+        let martin = p.ln_martin_over_r.get(k).copied().unwrap_or(0.0);
+        let (ehl, hydro) = (
+            fastmath::exp(p.ln_radius + reg),
+            fastmath::exp(p.ln_radius + martin),
+        );
+        *h = crate::math::sqrt(ehl * ehl + hydro * hydro);
+    }
+    films
+}
+
+/// [`finish`] with the fallback films of [`fallback_films`] (host path of [`AnnInt`]); the
+/// same operations on the same values, so the same bits (tested against [`finish`]).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn finish_with_fallback(p: &Prepared, y: [f32; 2], fallback: [f32; 2], source: FilmSource) -> Film {
+    let mut films = [0.0f32; 2];
+    for (k, ((h, yk), fallback)) in films.iter_mut().zip(y).zip(fallback).enumerate() {
+        let lo = model::OUTPUT_MIN.get(k).copied().unwrap_or(0.0);
+        let half = model::OUTPUT_HALF_RANGE.get(k).copied().unwrap_or(0.0);
+        let reg = p.ln_regression_over_r.get(k).copied().unwrap_or(0.0);
+        let t = lo + (yk + 1.0) * half;
+        let ln_net = match model::TARGET {
+            TargetForm::LogRatio => p.ln_radius + reg + t,
+            TargetForm::LogHr => p.ln_radius + t,
+        };
+        let network = fastmath::exp(ln_net);
+        let value = crate::math::select(p.in_domain, network, fallback);
+        *h = if p.valid & (0.0..=f32::MAX).contains(&value) {
+            value
+        } else {
+            0.0
+        };
+    }
+    Film {
+        central_m: films[0],
+        minimum_m: films[1],
+        source: if p.in_domain {
+            source
+        } else {
+            FilmSource::Fallback
+        },
+    }
+}
+
 /// The loads at which the network serves contacts like `c` (its load ignored): every test of
 /// the guard in [`prepare`] is a bound on ln Q once the other inputs are fixed — the load box,
 /// the Hertz window (2 ln p_h rises with ln Q) and the three regime inequalities (each linear in
@@ -296,6 +351,17 @@ impl FilmModel for AnnInt {
 
     fn film(&self, contact: &ContactInput) -> Film {
         let p = prepare(contact);
+        #[cfg(target_arch = "x86_64")]
+        {
+            let fallback = fallback_films(&p);
+            finish_with_fallback(
+                &p,
+                Self::network(&p.features),
+                fallback,
+                FilmSource::NetworkInt,
+            )
+        }
+        #[cfg(not(target_arch = "x86_64"))]
         finish(&p, Self::network(&p.features), FilmSource::NetworkInt)
     }
 
@@ -382,5 +448,85 @@ mod range_tests {
                 );
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod host_path_tests {
+    use super::*;
+
+    /// The host's `AnnInt::film` (fallback films before the network) gives the bits of the
+    /// plain sequence `prepare`, network, `finish` — the reference the Cortex-M4 runs — on
+    /// contacts inside and outside the domain and on hostile inputs (zero, negative, NaN, ∞ in
+    /// each field): central and minimum films compared as bit patterns, and the source.
+    #[test]
+    fn host_film_is_the_plain_sequence() {
+        let base = ContactInput {
+            load_n: 850.0,
+            length_m: 15e-3,
+            entrainment_speed_m_s: 9.83,
+            reduced_radius_m: 3.029e-3,
+            reduced_modulus_pa: 239.6e9,
+            pressure_viscosity_pa_inv: 2.1e-8,
+            viscosity_pa_s: 0.08,
+        };
+        let mut contacts = std::vec![base];
+        // Log-uniform factors 10^±3 on every field (SplitMix64, Steele, Lea & Flood 2014):
+        // most contacts leave the domain through one bound or another.
+        let mut state = 5u64;
+        let mut factor = || {
+            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            z ^= z >> 31;
+            libm::powf(10.0, (z >> 40) as f32 / (1u64 << 24) as f32 * 6.0 - 3.0)
+        };
+        for k in 0..20_000 {
+            let mut c = base;
+            let fields = [
+                &mut c.load_n,
+                &mut c.length_m,
+                &mut c.entrainment_speed_m_s,
+                &mut c.reduced_radius_m,
+                &mut c.reduced_modulus_pa,
+                &mut c.pressure_viscosity_pa_inv,
+                &mut c.viscosity_pa_s,
+            ];
+            // Near the base for the even contacts (mostly in the domain), far for the odd.
+            for f in fields {
+                let g = factor();
+                *f *= if k % 2 == 0 { libm::powf(g, 0.05) } else { g };
+            }
+            contacts.push(c);
+        }
+        for hostile in [0.0, -1.0, f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+            for field in 0..7 {
+                let mut c = base;
+                let f = match field {
+                    0 => &mut c.load_n,
+                    1 => &mut c.length_m,
+                    2 => &mut c.entrainment_speed_m_s,
+                    3 => &mut c.reduced_radius_m,
+                    4 => &mut c.reduced_modulus_pa,
+                    5 => &mut c.pressure_viscosity_pa_inv,
+                    _ => &mut c.viscosity_pa_s,
+                };
+                *f = hostile;
+                contacts.push(c);
+            }
+        }
+        let mut served = 0;
+        for c in &contacts {
+            let p = prepare(c);
+            let want = finish(&p, AnnInt::network(&p.features), FilmSource::NetworkInt);
+            let got = AnnInt.film(c);
+            assert_eq!(got.central_m.to_bits(), want.central_m.to_bits(), "{c:?}");
+            assert_eq!(got.minimum_m.to_bits(), want.minimum_m.to_bits(), "{c:?}");
+            assert_eq!(got.source, want.source, "{c:?}");
+            served += usize::from(got.source == FilmSource::NetworkInt);
+        }
+        // Both sides of the guard are exercised.
+        assert!(served > 1000 && served < contacts.len() - 1000, "{served}");
     }
 }

@@ -4,7 +4,7 @@
 //! Network: 5 inputs → 10 → 10 → 2 (tanh hidden, linear output); 16-bit weights.
 
 use super::float::{Activation, DenseF32};
-use super::int::{DenseInt, Lut};
+use super::int::{DenseInt, Lut, LutLanes};
 use super::{DomainLimits, InputSet, TargetForm};
 
 /// Fingerprint of the model parts this file was generated from.
@@ -209,11 +209,13 @@ pub static LUT: Lut = [
     32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 32767,
     32767,
 ];
+/// The host path's copy of the activation table (`int::LutLanes`).
+pub static LUT_LANES: LutLanes = LutLanes::new(&LUT);
 
 /// The integer network on quantised features.
 #[inline]
 pub fn forward_int(x: &[i16; N_IN]) -> [i16; 2] {
-    let a = INT_LAYER_0.forward_lut(x, &LUT);
-    let a = INT_LAYER_1.forward_lut(&a, &LUT);
-    INT_LAYER_2.forward_linear(&a)
+    let a = INT_LAYER_0.lut_layer(x, &LUT, &LUT_LANES);
+    let a = INT_LAYER_1.lut_layer(&a, &LUT, &LUT_LANES);
+    INT_LAYER_2.output_layer(&a)
 }
