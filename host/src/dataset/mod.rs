@@ -4,11 +4,11 @@
 //!
 //! - [`domain`]: input box, Hertz window, regime test.
 //! - [`lhs`]: maximin-optimised Latin hypercube.
-//! - [`file`]: the dataset file format (metadata header + one record per case).
-//! - [`generate`]: deterministic, parallel, resumable generation over a solver closure.
+//! - [`file`](mod@file): the dataset file format (metadata header + one record per case).
+//! - [`generate`](mod@generate): deterministic, parallel, resumable generation over a solver closure.
 //! - [`formulas`]: regression and Moes formulas (f64), the latter the pipeline stand-in target.
 //! - [`numerical`]: the numerical EHL solver as the dataset solver.
-//! - [`reference`]: check that the reference machines of PHYSICS.md §6 lie in the domain.
+//! - [`reference`](mod@reference): check that the reference machines of PHYSICS.md §6 lie in the domain.
 
 pub mod domain;
 pub mod file;

@@ -144,7 +144,7 @@ impl Solver {
 
     /// Solves one case. Unconverged ⇒ [`EhlError::NotConverged`], never a result.
     ///
-    /// The grid family is chosen by [`Solver::select_family`]; if the solve fails on it, it is
+    /// The grid family is chosen by `Solver::select_family`; if the solve fails on it, it is
     /// repeated on the other family (a thin film that the edge-refined grid cannot start from
     /// the Hertz pressure may still converge on the standard grid, and vice versa).
     pub fn solve(&mut self, case: &ContactCase) -> Result<EhlSolution, EhlError> {

@@ -30,7 +30,7 @@
 //! both PHYSICS.md §5.2 criteria (Σ|ΔP|/ΣP ≤ 10⁻⁵ after a full Newton step with an unchanged
 //! active set, and |∫P − π/2|/(π/2) ≤ 10⁻³) hold.
 //!
-//! Accuracy evidence (tests in [`tests_reference`], [`convergence`]; tables in docs/ehl.md):
+//! Accuracy evidence (tests in `tests_reference`, [`convergence`]; tables in docs/ehl.md):
 //! grid refinement against Richardson extrapolation, the Hertz limit, Martin's rigid iso-viscous
 //! limit, Moes' formula (Barus) and Pan–Hamrock's formulas (Roelands + DH).
 

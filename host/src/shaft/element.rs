@@ -18,7 +18,7 @@
 //!
 //! * kinetic, translational: ½ ρA ∫ (ẋ² + ẏ²) dz
 //! * kinetic, rotary:       ½ ρI ∫ (θ̇x² + θ̇y²) dz
-//! * gyroscopic:            Ω ρIp ∫ (θ̇x θy − θ̇y θx)… giving the skew term ΩG q̇ (G[θx,θy] = +ρIp)
+//! * gyroscopic:            Ω ρIp ∫ (θ̇x θy − θ̇y θx)… giving the skew term ΩG q̇ (G\[θx,θy\] = +ρIp)
 //! * bending strain:        ½ EI ∫ (θx'² + θy'²) dz
 //! * shear strain:          ½ κGA ∫ ((x' − θy)² + (y' + θx)²) dz
 //!
