@@ -164,47 +164,14 @@ pub fn prepare(c: &ContactInput) -> Prepared {
 }
 
 /// Step 5: the film from the normalised network output `y` (either path) or the fallback.
+/// Both are always computed: the work must not depend on the guard.
 pub fn finish(p: &Prepared, y: [f32; 2], source: FilmSource) -> Film {
-    let mut films = [0.0f32; 2];
-    for (k, (h, yk)) in films.iter_mut().zip(y).enumerate() {
-        let lo = model::OUTPUT_MIN.get(k).copied().unwrap_or(0.0);
-        let half = model::OUTPUT_HALF_RANGE.get(k).copied().unwrap_or(0.0);
-        let reg = p.ln_regression_over_r.get(k).copied().unwrap_or(0.0);
-        let martin = p.ln_martin_over_r.get(k).copied().unwrap_or(0.0);
-        let t = lo + (yk + 1.0) * half;
-        let ln_net = match model::TARGET {
-            TargetForm::LogRatio => p.ln_radius + reg + t,
-            TargetForm::LogHr => p.ln_radius + t,
-        };
-        // Both are always computed: the work must not depend on the guard.
-        let network = fastmath::exp(ln_net);
-        let (ehl, hydro) = (
-            fastmath::exp(p.ln_radius + reg),
-            fastmath::exp(p.ln_radius + martin),
-        );
-        let fallback = crate::math::sqrt(ehl * ehl + hydro * hydro);
-        let value = crate::math::select(p.in_domain, network, fallback);
-        *h = if p.valid & (0.0..=f32::MAX).contains(&value) {
-            value
-        } else {
-            0.0
-        };
-    }
-    Film {
-        central_m: films[0],
-        minimum_m: films[1],
-        source: if p.in_domain {
-            source
-        } else {
-            FilmSource::Fallback
-        },
-    }
+    finish_with_fallback(p, y, fallback_films(p), source)
 }
 
-/// The fallback films of step 5 alone (`finish`'s `fallback`, the same operations): they do not
-/// depend on the network, so the host's [`AnnInt`] computes them before it, where they run
-/// while the network's latency-bound chain waits instead of after it.
-#[cfg(target_arch = "x86_64")]
+/// The fallback films of step 5: the regression film blended with the rigid-isoviscous (Martin)
+/// one. They do not depend on the network, so the host's [`AnnInt`] computes them before it,
+/// where they run while the network's latency-bound chain waits instead of after it.
 #[inline(always)]
 fn fallback_films(p: &Prepared) -> [f32; 2] {
     let mut films = [0.0f32; 2];
@@ -220,9 +187,8 @@ fn fallback_films(p: &Prepared) -> [f32; 2] {
     films
 }
 
-/// [`finish`] with the fallback films of [`fallback_films`] (host path of [`AnnInt`]); the
-/// same operations on the same values, so the same bits (tested against [`finish`]).
-#[cfg(target_arch = "x86_64")]
+/// Step 5 with the fallback films of [`fallback_films`] already computed: the network film,
+/// or the fallback outside the domain; 0 for invalid input or a non-finite value.
 #[inline(always)]
 fn finish_with_fallback(p: &Prepared, y: [f32; 2], fallback: [f32; 2], source: FilmSource) -> Film {
     let mut films = [0.0f32; 2];
@@ -459,6 +425,19 @@ mod host_path_tests {
     /// plain sequence `prepare`, network, `finish` — the reference the Cortex-M4 runs — on
     /// contacts inside and outside the domain and on hostile inputs (zero, negative, NaN, ∞ in
     /// each field): central and minimum films compared as bit patterns, and the source.
+    /// Every input field of a contact.
+    fn fields(c: &mut ContactInput) -> [&mut f32; 7] {
+        [
+            &mut c.load_n,
+            &mut c.length_m,
+            &mut c.entrainment_speed_m_s,
+            &mut c.reduced_radius_m,
+            &mut c.reduced_modulus_pa,
+            &mut c.pressure_viscosity_pa_inv,
+            &mut c.viscosity_pa_s,
+        ]
+    }
+
     #[test]
     fn host_film_is_the_plain_sequence() {
         let base = ContactInput {
@@ -484,17 +463,8 @@ mod host_path_tests {
         };
         for k in 0..20_000 {
             let mut c = base;
-            let fields = [
-                &mut c.load_n,
-                &mut c.length_m,
-                &mut c.entrainment_speed_m_s,
-                &mut c.reduced_radius_m,
-                &mut c.reduced_modulus_pa,
-                &mut c.pressure_viscosity_pa_inv,
-                &mut c.viscosity_pa_s,
-            ];
             // Near the base for the even contacts (mostly in the domain), far for the odd.
-            for f in fields {
+            for f in fields(&mut c) {
                 let g = factor();
                 *f *= if k % 2 == 0 { libm::powf(g, 0.05) } else { g };
             }
@@ -503,16 +473,9 @@ mod host_path_tests {
         for hostile in [0.0, -1.0, f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
             for field in 0..7 {
                 let mut c = base;
-                let f = match field {
-                    0 => &mut c.load_n,
-                    1 => &mut c.length_m,
-                    2 => &mut c.entrainment_speed_m_s,
-                    3 => &mut c.reduced_radius_m,
-                    4 => &mut c.reduced_modulus_pa,
-                    5 => &mut c.pressure_viscosity_pa_inv,
-                    _ => &mut c.viscosity_pa_s,
-                };
-                *f = hostile;
+                if let Some(f) = fields(&mut c).into_iter().nth(field) {
+                    *f = hostile;
+                }
                 contacts.push(c);
             }
         }
