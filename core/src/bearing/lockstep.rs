@@ -19,10 +19,7 @@ use super::film_table::StepFilms;
 use super::Place;
 use crate::contact::{RollerLoads, SlicedRoller};
 use crate::film::RegimeAxis;
-use crate::lanes::{F32x4, Real};
-
-/// Rollers in the lanes of one group.
-const LANES: usize = 4;
+use crate::lanes::{Real, Wide, WIDE_LANES as LANES};
 
 /// What the roller solve of a step reads: the roller, the step's films and regime axes.
 pub(super) struct Lockstep<'a, const S: usize> {
@@ -104,10 +101,10 @@ impl<const S: usize> Lockstep<'_, S> {
     /// A group's warm start and geometric approach in lanes, its predicted approach and its
     /// slice pass there.
     #[inline(always)]
-    fn slice(&self, group: &Group<'_>) -> (RollerMemory<F32x4>, F32x4, F32x4, RollerLoads<F32x4>) {
+    fn slice(&self, group: &Group<'_>) -> (RollerMemory<Wide>, Wide, Wide, RollerLoads<Wide>) {
         let memory = RollerMemory::gather(group.memory);
-        let geometric = F32x4::gather(group.places, |p| p.geometric_m);
-        let tilt = F32x4::gather(group.places, |p| p.tilt_rad);
+        let geometric = Wide::gather(group.places, |p| p.geometric_m);
+        let tilt = Wide::gather(group.places, |p| p.tilt_rad);
         let approach1 = predicted_approach(geometric, &memory);
         let loads = self
             .roller
@@ -120,13 +117,13 @@ impl<const S: usize> Lockstep<'_, S> {
     #[inline(always)]
     fn finish(
         &self,
-        prepared: &Prepared<F32x4>,
-        memories: &mut RollerMemory<F32x4>,
+        prepared: &Prepared<Wide>,
+        memories: &mut RollerMemory<Wide>,
         group: Group<'_>,
     ) {
         let finished = finish_lanes(prepared, self.films, memories);
-        let rollers = F32x4::build(|i| finished.roller(i, self.regime_axes));
-        let new = F32x4::build(|i| memories.lane(i));
+        let rollers = Wide::build(|i| finished.roller(i, self.regime_axes));
+        let new = Wide::build(|i| memories.lane(i));
         for ((o, m), (roller, new)) in group
             .out
             .iter_mut()
@@ -232,5 +229,7 @@ mod tests {
         }
         check::<17>();
         check::<13>();
+        check::<9>();
+        check::<8>();
     }
 }

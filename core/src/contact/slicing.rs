@@ -6,13 +6,9 @@
 //! (on both contacts, hence 2P). Only slices with δ_k > 0 carry load.
 
 use super::law::{BoundLaw, ContactLaw, MAX_APPROACH_M};
-use crate::lanes::{F32x4, Real};
+use crate::lanes::{Real, Wide, WIDE_LANES as LANES};
 use crate::math::{max, min, ninth_root_in_range, select};
 use crate::params::BearingGeometry;
-
-/// Rollers per pass of `SlicedRoller::evaluate_lanes`: four f32 lanes fill an SSE/NEON
-/// register.
-const LANES: usize = 4;
 
 /// Largest roller tilt the slice pass evaluates (rad): twice the largest the operating state
 /// admits, which a roller sees as tilt_y·cos θ − tilt_x·sin θ.
@@ -161,15 +157,16 @@ impl<const S: usize> SlicedRoller<S> {
         }
     }
 
-    /// [`SlicedRoller::evaluate`] for four rollers of this shape at approaches `approach_m`
-    /// and tilts `tilt_rad`, bit for bit, as SIMD lanes: the host's slice pass. The Palmgren
-    /// pass runs the rollers side by side (`evaluate_palmgren_lanes`).
+    /// [`SlicedRoller::evaluate`] for the rollers in the lanes of `Wide` (four, or eight with
+    /// AVX2), all of this shape, at approaches `approach_m` and tilts `tilt_rad`, bit for bit,
+    /// as SIMD lanes: the host's slice pass. The Palmgren pass runs the rollers side by side
+    /// (`evaluate_palmgren_lanes`).
     #[inline(always)]
     pub(crate) fn evaluate_lanes(
         &self,
         approach_m: [f32; LANES],
         tilt_rad: [f32; LANES],
-    ) -> RollerLoads<F32x4> {
+    ) -> RollerLoads<Wide> {
         match self.law.kind() {
             ContactLaw::Palmgren => self.evaluate_palmgren_lanes(approach_m, tilt_rad),
             ContactLaw::Lundberg => RollerLoads::from_lanes(&core::array::from_fn(|l| {
@@ -210,7 +207,7 @@ impl<const S: usize> SlicedRoller<S> {
         &self,
         approach_m: [f32; LANES],
         tilt_rad: [f32; LANES],
-    ) -> RollerLoads<F32x4> {
+    ) -> RollerLoads<Wide> {
         let mut bounds = [(0.0f32, 0.0f32); LANES];
         for ((b, &a), &t) in bounds
             .iter_mut()
@@ -231,17 +228,13 @@ impl<const S: usize> SlicedRoller<S> {
                 (*d, *r) = slice_root(a + x * t + c);
             }
         }
-        let mut sums = PalmgrenSums::<F32x4>::zero();
+        let mut sums = PalmgrenSums::<Wide>::zero();
         for ((d, r), &x) in approach
             .iter()
             .zip(root.iter())
             .zip(self.positions_m.iter())
         {
-            sums.add(
-                F32x4::from_array(*d),
-                F32x4::from_array(*r),
-                F32x4::splat(x),
-            );
+            sums.add(Wide::from_array(*d), Wide::from_array(*r), Wide::splat(x));
         }
         self.load_from(&sums)
     }
@@ -340,8 +333,8 @@ mod tests {
     const E: f32 = 230.77e9;
 
     /// The lanes of `evaluate_lanes` are the one-roller pass bit for bit: crowned and straight
-    /// rollers, both laws, 17 rollers in groups of four (a short last group, idle lanes at
-    /// zero approach), approaches from separated to deep, tilts of both signs, and NaN.
+    /// rollers, both laws, 17 rollers in groups of the host's lane width (four, or eight with
+    /// AVX2; a short last group, idle lanes at zero approach), approaches from separated to deep, tilts of both signs, and NaN.
     #[test]
     fn evaluate_lanes_is_evaluate_bit_for_bit() {
         for crown in [Crown::None, Crown::Logarithmic { scale: 1.0 }] {
