@@ -1,25 +1,31 @@
-//! The host's roller solve: rollers side by side in SIMD lanes, and groups of them in flight
-//! together.
+//! The host's roller solve: rollers side by side in SIMD lanes.
 //!
 //! A roller's solve after its geometry — predicted approach, slice pass, power-law fit,
 //! [`NEWTON_ITERATIONS`] Newton steps, finish and memory (`coupling`) — is the same
-//! operations for every roller, so a superscalar host runs four rollers in the lanes of one
-//! SIMD register (`crate::lanes`), bit for bit as the Cortex-M4 runs each alone. Most of
-//! those stages are chains of dependent operations (exponentials, roots, divisions), whose
-//! latency one group of four leaves idle; two groups are therefore taken through the stages
-//! together, each stage of the first followed by the same stage of the second, so that the
-//! core overlaps their chains (out-of-order execution within a few hundred instructions).
-//! The results are the lanes' results, whatever the grouping.
+//! operations for every roller, so a superscalar host runs a group of rollers in the lanes of
+//! one SIMD register (`crate::lanes`: eight with AVX2, else four), bit for bit as the
+//! Cortex-M4 runs each alone. The results are the lanes' results, whatever the grouping.
+//!
+//! Measured choices (best 1000-step chunk of the 17-roller, 10-slice hub bearing with the
+//! integer network, one core of this project's AMD EPYC host; `/work/scratch/prof`-style
+//! harness, see the README): with four lanes, two groups taken through the stages together
+//! overlapped their dependency chains and paid; with eight lanes, the groups are taken one at
+//! a time (two together: 1.29 µs, one at a time: 1.21 µs — sixteen rollers in flight spill
+//! the 16 ymm registers). The last group of 17 rollers holds one roller: in four lanes it
+//! costs ≈ 80 ns less than in eight (its idle lanes' gathers and table look-ups are half as
+//! many; 1.19 → 1.11 µs); one roller alone on the scalar path costs ≈ 20 ns more than that.
+//! The results are read out of the lanes only for the group's rollers, one register store per
+//! field (`store_rollers`, `store_lanes`).
 
 use super::coupling::{
-    finish_lanes, predicted_approach, prepare_sliced, CoupledRoller, Prepared, RollerMemory,
+    finish_lanes, predicted_approach, prepare_sliced, CoupledRoller, RollerMemory,
     NEWTON_ITERATIONS,
 };
 use super::film_table::StepFilms;
 use super::Place;
 use crate::contact::{RollerLoads, SlicedRoller};
 use crate::film::RegimeAxis;
-use crate::lanes::{Real, Wide, WIDE_LANES as LANES};
+use crate::lanes::{F32x4, Real, Wide, WIDE_LANES as LANES};
 
 /// What the roller solve of a step reads: the roller, the step's films and regime axes.
 pub(super) struct Lockstep<'a, const S: usize> {
@@ -30,9 +36,10 @@ pub(super) struct Lockstep<'a, const S: usize> {
 
 impl<const S: usize> Lockstep<'_, S> {
     /// Solve every roller at `places` from its warm start `memory` (updated): `out[j]` is
-    /// roller j's result. Two groups at a time; a last group alone if the groups are odd in
-    /// number. (A short group fills its idle lanes with copies of its last roller, whose
-    /// results are discarded.)
+    /// roller j's result. Groups of [`LANES`] rollers in [`Wide`] lanes, one group at a time;
+    /// with eight lanes, a last group of four rollers or fewer in four lanes (`F32x4`): it
+    /// costs less there (fewer idle lanes gathered and looked up). (A short group fills its
+    /// idle lanes with copies of its last roller, whose results are discarded.)
     pub(super) fn solve(
         &self,
         places: &[Place],
@@ -40,99 +47,51 @@ impl<const S: usize> Lockstep<'_, S> {
         out: &mut [CoupledRoller],
     ) {
         for ((out, memory), places) in out
-            .chunks_mut(2 * LANES)
-            .zip(memory.chunks_mut(2 * LANES))
-            .zip(places.chunks(2 * LANES))
+            .chunks_mut(LANES)
+            .zip(memory.chunks_mut(LANES))
+            .zip(places.chunks(LANES))
         {
-            if places.len() > LANES {
-                let (places_a, places_b) = places.split_at(LANES);
-                let (memory_a, memory_b) = memory.split_at_mut(LANES.min(memory.len()));
-                let (out_a, out_b) = out.split_at_mut(LANES.min(out.len()));
-                self.solve_pair([
-                    Group {
-                        places: places_a,
-                        memory: memory_a,
-                        out: out_a,
-                    },
-                    Group {
-                        places: places_b,
-                        memory: memory_b,
-                        out: out_b,
-                    },
-                ]);
+            let group = Group {
+                places,
+                memory,
+                out,
+            };
+            if LANES > 4 && places.len() <= 4 {
+                self.solve_group::<F32x4, 4>(group);
             } else {
-                self.solve_one(Group {
-                    places,
-                    memory,
-                    out,
-                });
+                self.solve_group::<Wide, LANES>(group);
             }
         }
     }
 
-    /// Two groups, stage by stage. (Spelled out, without arrays of stages built by closures:
-    /// in a build of several codegen units — the workspace's release profile — those closures
-    /// stayed calls that passed the groups' state through memory.)
+    /// One group of at most `L` rollers, in the lanes of `T`.
     #[inline(always)]
-    fn solve_pair(&self, [a, b]: [Group<'_>; 2]) {
-        let (mut memory_a, geometric_a, approach_a, loads_a) = self.slice(&a);
-        let (mut memory_b, geometric_b, approach_b, loads_b) = self.slice(&b);
-        let mut prepared_a = prepare_sliced(loads_a, approach_a, geometric_a, &memory_a);
-        let mut prepared_b = prepare_sliced(loads_b, approach_b, geometric_b, &memory_b);
-        for _ in 0..NEWTON_ITERATIONS {
-            prepared_a.newton.iterate(self.films);
-            prepared_b.newton.iterate(self.films);
-        }
-        self.finish(&prepared_a, &mut memory_a, a);
-        self.finish(&prepared_b, &mut memory_b, b);
-    }
-
-    /// One group.
-    #[inline(always)]
-    fn solve_one(&self, group: Group<'_>) {
-        let (mut memory, geometric, approach1, loads) = self.slice(&group);
+    fn solve_group<T: Real<PerLane<f32> = [f32; L]>, const L: usize>(&self, group: Group<'_>) {
+        let (mut memory, geometric, approach1, loads) = self.slice::<T, L>(&group);
         let mut prepared = prepare_sliced(loads, approach1, geometric, &memory);
         for _ in 0..NEWTON_ITERATIONS {
             prepared.newton.iterate(self.films);
         }
-        self.finish(&prepared, &mut memory, group);
+        let finished = finish_lanes(&prepared, self.films, &mut memory);
+        finished.store_rollers(self.regime_axes, group.out);
+        memory.store_lanes(group.memory);
     }
 
     /// A group's warm start and geometric approach in lanes, its predicted approach and its
     /// slice pass there.
     #[inline(always)]
-    fn slice(&self, group: &Group<'_>) -> (RollerMemory<Wide>, Wide, Wide, RollerLoads<Wide>) {
+    fn slice<T: Real<PerLane<f32> = [f32; L]>, const L: usize>(
+        &self,
+        group: &Group<'_>,
+    ) -> (RollerMemory<T>, T, T, RollerLoads<T>) {
         let memory = RollerMemory::gather(group.memory);
-        let geometric = Wide::gather(group.places, |p| p.geometric_m);
-        let tilt = Wide::gather(group.places, |p| p.tilt_rad);
+        let geometric = T::gather(group.places, |p| p.geometric_m);
+        let tilt = T::gather(group.places, |p| p.tilt_rad);
         let approach1 = predicted_approach(geometric, &memory);
         let loads = self
             .roller
-            .evaluate_lanes(approach1.to_array(), tilt.to_array());
+            .evaluate_lanes::<T, L>(approach1.to_per_lane(), tilt.to_per_lane());
         (memory, geometric, approach1, loads)
-    }
-
-    /// A group's finish: its rollers' results and new warm starts, each lane taken apart once,
-    /// at a lane index known to the compiler.
-    #[inline(always)]
-    fn finish(
-        &self,
-        prepared: &Prepared<Wide>,
-        memories: &mut RollerMemory<Wide>,
-        group: Group<'_>,
-    ) {
-        let finished = finish_lanes(prepared, self.films, memories);
-        let rollers = Wide::build(|i| finished.roller(i, self.regime_axes));
-        let new = Wide::build(|i| memories.lane(i));
-        for ((o, m), (roller, new)) in group
-            .out
-            .iter_mut()
-            .zip(group.memory.iter_mut())
-            .zip(rollers.iter().zip(new.iter()))
-        {
-            *o = *roller;
-            *m = *new;
-        }
     }
 }
 
@@ -155,9 +114,12 @@ mod tests {
     use crate::params::{reduced_modulus, BearingGeometry, Crown, Material};
 
     /// The grouped lanes give every roller the result and the memory of its solve alone (the
-    /// M4's `prepare_roller`, Newton steps, `finish_roller`), bit for bit: 17 rollers (two
-    /// pairs of groups and a last group of one) and 13 (a pair, then a pair whose second
-    /// group has one roller), crowned hub-bearing rollers from separated (−9 µm) to heavily
+    /// M4's `prepare_roller`, Newton steps, `finish_roller`), bit for bit: 17, 13, 12, 9 and
+    /// 8 rollers — with eight lanes two full groups and a last one of one roller (in four
+    /// lanes), a full group and a short one of five, a full one and four rollers in four
+    /// lanes, a full one and one, one full group; with four lanes, four full groups and one
+    /// roller, three and one, three, two and one, two — crowned hub-bearing rollers from
+    /// separated (−9 µm) to heavily
     /// loaded (+12 µm), tilted both ways, over three steps from a cold start with the
     /// geometry moving. Every stage of the host's solve is in the chain: predicted approach,
     /// slice pass (`evaluate_lanes`), power-law fit and start (`prepare_sliced`), Newton
@@ -229,6 +191,7 @@ mod tests {
         }
         check::<17>();
         check::<13>();
+        check::<12>();
         check::<9>();
         check::<8>();
     }

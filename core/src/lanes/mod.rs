@@ -71,8 +71,10 @@ pub(crate) trait Real:
     ) -> Self;
     /// Lane `i` (0 beyond the lanes).
     fn lane(self, i: usize) -> f32;
+    /// The lanes as per-lane items, to be read lane by lane with [`Real::item`] (one store of
+    /// the register, where [`Real::lane`] of each lane would store it once per lane).
+    fn to_per_lane(self) -> Self::PerLane<f32>;
     /// Item `i` of per-lane items (the default beyond the lanes).
-    #[cfg(test)]
     fn item<U: Copy + Default + core::fmt::Debug>(items: &Self::PerLane<U>, i: usize) -> U;
     /// Per-lane items `f(i)` of lanes `i` = 0, 1, ….
     fn build<U: Copy + Default + core::fmt::Debug>(f: impl FnMut(usize) -> U) -> Self::PerLane<U>;
@@ -166,7 +168,10 @@ impl Real for f32 {
             0.0
         }
     }
-    #[cfg(test)]
+    #[inline(always)]
+    fn to_per_lane(self) -> f32 {
+        self
+    }
     #[inline(always)]
     fn item<U: Copy + Default + core::fmt::Debug>(items: &U, i: usize) -> U {
         if i == 0 {
@@ -287,7 +292,10 @@ macro_rules! real_lanes {
             fn lane(self, i: usize) -> f32 {
                 self.to_array().get(i).copied().unwrap_or(0.0)
             }
-            #[cfg(test)]
+            #[inline(always)]
+            fn to_per_lane(self) -> [f32; $n] {
+                self.to_array()
+            }
             #[inline(always)]
             fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; $n], i: usize) -> U {
                 items.get(i).copied().unwrap_or_default()

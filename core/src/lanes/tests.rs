@@ -100,12 +100,12 @@ fn operations_bit_for_bit<T: Real>() {
                 |f: fn(f32) -> f32| -> std::vec::Vec<f32> { a.iter().map(|&v| f(v)).collect() };
             let root = lanes_of::<T>(&map(f32::abs)).sqrt_non_negative();
             let (r, p) = lanes_of::<T>(&map(|v| v.clamp(-126.0, 127.0))).round_with_pow2();
-            for i in 0..n {
+            for (i, &x) in a.iter().enumerate() {
                 assert_eq!(
                     bits(root.lane(i)),
-                    bits(crate::math::sqrt_non_negative(a[i].abs()))
+                    bits(crate::math::sqrt_non_negative(x.abs()))
                 );
-                let (r1, p1) = crate::math::round_with_pow2(a[i].clamp(-126.0, 127.0));
+                let (r1, p1) = crate::math::round_with_pow2(x.clamp(-126.0, 127.0));
                 assert_eq!((bits(r.lane(i)), bits(p.lane(i))), (bits(r1), bits(p1)));
             }
             // Truncation to an index, of lanes in the range of table indices (the values
