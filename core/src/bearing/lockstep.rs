@@ -18,7 +18,7 @@
 //! field (`store_rollers`, `store_lanes`).
 
 use super::coupling::{
-    finish_lanes, predicted_approach, prepare_sliced, CoupledRoller, RollerMemory,
+    finish_lanes, predicted_approach, prepare_sliced, CoupledRoller, Prepared, RollerMemory,
     NEWTON_ITERATIONS,
 };
 use super::film_table::StepFilms;
@@ -36,10 +36,12 @@ pub(super) struct Lockstep<'a, const S: usize> {
 
 impl<const S: usize> Lockstep<'_, S> {
     /// Solve every roller at `places` from its warm start `memory` (updated): `out[j]` is
-    /// roller j's result. Groups of [`LANES`] rollers in [`Wide`] lanes, one group at a time;
-    /// with eight lanes, a last group of four rollers or fewer in four lanes (`F32x4`): it
-    /// costs less there (fewer idle lanes gathered and looked up). (A short group fills its
-    /// idle lanes with copies of its last roller, whose results are discarded.)
+    /// roller j's result. Groups of [`LANES`] rollers in [`Wide`] lanes: with eight lanes one
+    /// group at a time, and a last group of four rollers or fewer in four lanes (`F32x4`),
+    /// where it costs less (half the idle lanes to gather and look up); with four lanes two
+    /// groups at a time, and a last group alone if the groups are odd in number. (A short
+    /// group fills its idle lanes with copies of its last roller, whose results are
+    /// discarded.)
     pub(super) fn solve(
         &self,
         places: &[Place],
@@ -47,21 +49,57 @@ impl<const S: usize> Lockstep<'_, S> {
         out: &mut [CoupledRoller],
     ) {
         for ((out, memory), places) in out
-            .chunks_mut(LANES)
-            .zip(memory.chunks_mut(LANES))
-            .zip(places.chunks(LANES))
+            .chunks_mut(IN_FLIGHT * LANES)
+            .zip(memory.chunks_mut(IN_FLIGHT * LANES))
+            .zip(places.chunks(IN_FLIGHT * LANES))
         {
-            let group = Group {
-                places,
-                memory,
-                out,
-            };
-            if LANES > 4 && places.len() <= 4 {
-                self.solve_group::<F32x4, 4>(group);
+            if IN_FLIGHT == 2 && places.len() > LANES {
+                let (places_a, places_b) = places.split_at(LANES);
+                let (memory_a, memory_b) = memory.split_at_mut(LANES.min(memory.len()));
+                let (out_a, out_b) = out.split_at_mut(LANES.min(out.len()));
+                self.solve_pair([
+                    Group {
+                        places: places_a,
+                        memory: memory_a,
+                        out: out_a,
+                    },
+                    Group {
+                        places: places_b,
+                        memory: memory_b,
+                        out: out_b,
+                    },
+                ]);
+            } else if LANES > 4 && places.len() <= 4 {
+                self.solve_group::<F32x4, 4>(Group {
+                    places,
+                    memory,
+                    out,
+                });
             } else {
-                self.solve_group::<Wide, LANES>(group);
+                self.solve_group::<Wide, LANES>(Group {
+                    places,
+                    memory,
+                    out,
+                });
             }
         }
+    }
+
+    /// Two groups of four lanes, stage by stage. (Spelled out, without arrays of stages built
+    /// by closures: in a build of several codegen units — the workspace's release profile —
+    /// those closures stayed calls that passed the groups' state through memory.)
+    #[inline(always)]
+    fn solve_pair(&self, [a, b]: [Group<'_>; 2]) {
+        let (mut memory_a, geometric_a, approach_a, loads_a) = self.slice::<Wide, LANES>(&a);
+        let (mut memory_b, geometric_b, approach_b, loads_b) = self.slice::<Wide, LANES>(&b);
+        let mut prepared_a = prepare_sliced(loads_a, approach_a, geometric_a, &memory_a);
+        let mut prepared_b = prepare_sliced(loads_b, approach_b, geometric_b, &memory_b);
+        for _ in 0..NEWTON_ITERATIONS {
+            prepared_a.newton.iterate(self.films);
+            prepared_b.newton.iterate(self.films);
+        }
+        self.finish(&prepared_a, &mut memory_a, a);
+        self.finish(&prepared_b, &mut memory_b, b);
     }
 
     /// One group of at most `L` rollers, in the lanes of `T`.
@@ -72,9 +110,7 @@ impl<const S: usize> Lockstep<'_, S> {
         for _ in 0..NEWTON_ITERATIONS {
             prepared.newton.iterate(self.films);
         }
-        let finished = finish_lanes(&prepared, self.films, &mut memory);
-        finished.store_rollers(self.regime_axes, group.out);
-        memory.store_lanes(group.memory);
+        self.finish(&prepared, &mut memory, group);
     }
 
     /// A group's warm start and geometric approach in lanes, its predicted approach and its
@@ -94,6 +130,27 @@ impl<const S: usize> Lockstep<'_, S> {
         (memory, geometric, approach1, loads)
     }
 }
+
+impl<const S: usize> Lockstep<'_, S> {
+    /// A group's finish: its rollers' results and new warm starts, read out of the lanes once
+    /// per field and only for the group's rollers.
+    #[inline(always)]
+    fn finish<T: Real>(
+        &self,
+        prepared: &Prepared<T>,
+        memories: &mut RollerMemory<T>,
+        group: Group<'_>,
+    ) {
+        let finished = finish_lanes(prepared, self.films, memories);
+        finished.store_rollers(self.regime_axes, group.out);
+        memories.store_lanes(group.memory);
+    }
+}
+
+/// Groups taken through the stages together: two of four lanes overlap their chains of
+/// dependent operations and pay; two of eight spill the 16 ymm registers and do not (see the
+/// module's measurements).
+const IN_FLIGHT: usize = if LANES > 4 { 1 } else { 2 };
 
 /// Up to [`LANES`] rollers solved in the lanes of one register: where they are, their warm
 /// starts (updated) and their results.
