@@ -36,62 +36,100 @@ pub(super) struct Lockstep<'a, const S: usize> {
 
 impl<const S: usize> Lockstep<'_, S> {
     /// Solve every roller at `places` from its warm start `memory` (updated): `out[j]` is
-    /// roller j's result. Groups of [`LANES`] rollers in [`Wide`] lanes: with eight lanes one
-    /// group at a time, and a last group of four rollers or fewer in four lanes (`F32x4`),
-    /// where it costs less (half the idle lanes to gather and look up); with four lanes two
-    /// groups at a time, and a last group alone if the groups are odd in number. (A short
-    /// group fills its idle lanes with copies of its last roller, whose results are
-    /// discarded.)
+    /// roller j's result, whatever the grouping. (A short group fills its idle lanes with
+    /// copies of its last roller, whose results are discarded.)
     pub(super) fn solve(
         &self,
         places: &[Place],
         memory: &mut [RollerMemory],
         out: &mut [CoupledRoller],
     ) {
-        for ((out, memory), places) in out
-            .chunks_mut(IN_FLIGHT * LANES)
-            .zip(memory.chunks_mut(IN_FLIGHT * LANES))
-            .zip(places.chunks(IN_FLIGHT * LANES))
-        {
-            if IN_FLIGHT == 2 && places.len() > LANES {
-                let (places_a, places_b) = places.split_at(LANES);
-                let (memory_a, memory_b) = memory.split_at_mut(LANES.min(memory.len()));
-                let (out_a, out_b) = out.split_at_mut(LANES.min(out.len()));
-                self.solve_pair([
-                    Group {
-                        places: places_a,
-                        memory: memory_a,
-                        out: out_a,
-                    },
-                    Group {
-                        places: places_b,
-                        memory: memory_b,
-                        out: out_b,
-                    },
-                ]);
-            } else if LANES > 4 && places.len() <= 4 {
-                self.solve_group::<F32x4, 4>(Group {
-                    places,
-                    memory,
-                    out,
-                });
+        if LANES > 4 {
+            self.solve_eights(Group {
+                places,
+                memory,
+                out,
+            });
+        } else {
+            self.solve_fours(Group {
+                places,
+                memory,
+                out,
+            });
+        }
+    }
+
+    /// Eight lanes: groups of eight one at a time; a last group of four rollers or fewer in
+    /// four lanes (`F32x4`: half the idle lanes to gather and look up), taken through the
+    /// stages together with the group of eight before it (whose work hides its chains'
+    /// latency). A last group of five to seven rollers takes eight lanes alone.
+    #[inline(always)]
+    fn solve_eights(&self, rollers: Group<'_>) {
+        let count = rollers.places.len();
+        let tail = count % LANES;
+        let paired = if (1..=4).contains(&tail) && count > LANES {
+            LANES + tail
+        } else {
+            0
+        };
+        let (alone, last) = rollers.split_at(count - paired);
+        for group in alone.chunks() {
+            if group.places.len() <= 4 {
+                self.solve_group::<F32x4, 4>(group);
             } else {
-                self.solve_group::<Wide, LANES>(Group {
-                    places,
-                    memory,
-                    out,
-                });
+                self.solve_group::<Wide, LANES>(group);
+            }
+        }
+        if paired > 0 {
+            let (eight, four) = last.split_at(LANES);
+            self.solve_two::<Wide, LANES, F32x4, 4>(eight, four);
+        }
+    }
+
+    /// Four lanes: two groups at a time, a last group alone if the groups are odd in number.
+    #[inline(always)]
+    fn solve_fours(&self, rollers: Group<'_>) {
+        let Group {
+            places,
+            memory,
+            out,
+        } = rollers;
+        for ((out, memory), places) in out
+            .chunks_mut(2 * LANES)
+            .zip(memory.chunks_mut(2 * LANES))
+            .zip(places.chunks(2 * LANES))
+        {
+            let (a, b) = Group {
+                places,
+                memory,
+                out,
+            }
+            .split_at(LANES);
+            if b.places.is_empty() {
+                self.solve_group::<Wide, LANES>(a);
+            } else {
+                self.solve_two::<Wide, LANES, Wide, LANES>(a, b);
             }
         }
     }
 
-    /// Two groups of four lanes, stage by stage. (Spelled out, without arrays of stages built
-    /// by closures: in a build of several codegen units — the workspace's release profile —
-    /// those closures stayed calls that passed the groups' state through memory.)
+    /// Two groups, in the lanes of `A` and `B`, stage by stage. (Spelled out, without arrays
+    /// of stages built by closures: in a build of several codegen units — the workspace's
+    /// release profile — those closures stayed calls that passed the groups' state through
+    /// memory.)
     #[inline(always)]
-    fn solve_pair(&self, [a, b]: [Group<'_>; 2]) {
-        let (mut memory_a, geometric_a, approach_a, loads_a) = self.slice::<Wide, LANES>(&a);
-        let (mut memory_b, geometric_b, approach_b, loads_b) = self.slice::<Wide, LANES>(&b);
+    fn solve_two<
+        A: Real<PerLane<f32> = [f32; LA]>,
+        const LA: usize,
+        B: Real<PerLane<f32> = [f32; LB]>,
+        const LB: usize,
+    >(
+        &self,
+        a: Group<'_>,
+        b: Group<'_>,
+    ) {
+        let (mut memory_a, geometric_a, approach_a, loads_a) = self.slice::<A, LA>(&a);
+        let (mut memory_b, geometric_b, approach_b, loads_b) = self.slice::<B, LB>(&b);
         let mut prepared_a = prepare_sliced(loads_a, approach_a, geometric_a, &memory_a);
         let mut prepared_b = prepare_sliced(loads_b, approach_b, geometric_b, &memory_b);
         for _ in 0..NEWTON_ITERATIONS {
@@ -147,17 +185,48 @@ impl<const S: usize> Lockstep<'_, S> {
     }
 }
 
-/// Groups taken through the stages together: two of four lanes overlap their chains of
-/// dependent operations and pay; two of eight spill the 16 ymm registers and do not (see the
-/// module's measurements).
-const IN_FLIGHT: usize = if LANES > 4 { 1 } else { 2 };
-
-/// Up to [`LANES`] rollers solved in the lanes of one register: where they are, their warm
-/// starts (updated) and their results.
+/// Rollers solved together — up to [`LANES`] in the lanes of one register, or a run of such
+/// groups: where they are, their warm starts (updated) and their results.
 struct Group<'a> {
     places: &'a [Place],
     memory: &'a mut [RollerMemory],
     out: &'a mut [CoupledRoller],
+}
+
+impl<'a> Group<'a> {
+    /// The first `at` rollers (all if fewer) and the rest.
+    #[inline(always)]
+    fn split_at(self, at: usize) -> (Group<'a>, Group<'a>) {
+        let (places_a, places_b) = self.places.split_at(at.min(self.places.len()));
+        let (memory_a, memory_b) = self.memory.split_at_mut(at.min(self.memory.len()));
+        let (out_a, out_b) = self.out.split_at_mut(at.min(self.out.len()));
+        (
+            Group {
+                places: places_a,
+                memory: memory_a,
+                out: out_a,
+            },
+            Group {
+                places: places_b,
+                memory: memory_b,
+                out: out_b,
+            },
+        )
+    }
+
+    /// Groups of [`LANES`] rollers, the last one short.
+    #[inline(always)]
+    fn chunks(self) -> impl Iterator<Item = Group<'a>> {
+        self.out
+            .chunks_mut(LANES)
+            .zip(self.memory.chunks_mut(LANES))
+            .zip(self.places.chunks(LANES))
+            .map(|((out, memory), places)| Group {
+                places,
+                memory,
+                out,
+            })
+    }
 }
 
 #[cfg(test)]
@@ -248,8 +317,10 @@ mod tests {
         }
         check::<17>();
         check::<13>();
+        check::<20>();
         check::<12>();
         check::<9>();
         check::<8>();
+        check::<4>();
     }
 }
