@@ -1,21 +1,25 @@
-//! The host's roller solve: rollers side by side in SIMD lanes.
+//! The host's roller solve: rollers side by side in SIMD lanes, and groups of them in flight
+//! together.
 //!
 //! A roller's solve after its geometry — predicted approach, slice pass, power-law fit,
 //! [`NEWTON_ITERATIONS`] Newton steps, finish and memory (`coupling`) — is the same
 //! operations for every roller, so a superscalar host runs a group of rollers in the lanes of
 //! one SIMD register (`crate::lanes`: eight with AVX2, else four), bit for bit as the
-//! Cortex-M4 runs each alone. The results are the lanes' results, whatever the grouping.
+//! Cortex-M4 runs each alone. Most of those stages are chains of dependent operations
+//! (exponentials, roots, divisions), whose latency one group leaves idle; several groups are
+//! therefore taken through the stages together, each stage of the first followed by the same
+//! stage of the next, so that the core overlaps their chains (out-of-order execution within a
+//! few hundred instructions). The results are the lanes' results, whatever the grouping.
 //!
-//! Measured choices (best 1000-step chunk of the 17-roller, 10-slice hub bearing with the
-//! integer network, one core of this project's AMD EPYC host; `/work/scratch/prof`-style
-//! harness, see the README): with four lanes, two groups taken through the stages together
-//! overlapped their dependency chains and paid; with eight lanes, the groups are taken one at
-//! a time (two together: 1.29 µs, one at a time: 1.21 µs — sixteen rollers in flight spill
-//! the 16 ymm registers). The last group of 17 rollers holds one roller: in four lanes it
-//! costs ≈ 80 ns less than in eight (its idle lanes' gathers and table look-ups are half as
-//! many; 1.19 → 1.11 µs); one roller alone on the scalar path costs ≈ 20 ns more than that.
-//! The results are read out of the lanes only for the group's rollers, one register store per
-//! field (`store_rollers`, `store_lanes`).
+//! Measured choices (best 1000-step chunk, 10 slices, integer network, one pinned core of
+//! the project's AMD EPYC host): with four lanes, pairs of groups. With eight lanes, 17
+//! rollers took 1.21 µs one group at a time and 1.29 µs in pairs while the results were read
+//! out lane by lane through a call per lane; reading each field's register once
+//! (`store_rollers`, `store_lanes`, only for the group's rollers) made both ≈ 1.12 µs;
+//! a last group of one roller in four lanes instead of eight then saved ≈ 80 ns (half the
+//! idle lanes to gather and look up; alone on the scalar path it cost ≈ 20 ns more), taking
+//! it through the stages with the group before it ≈ 90 ns more, and all three groups
+//! together another ≈ 35 ns (1.02 → 0.99 µs; 13, 16 and 20 rollers gain 30–70 ns).
 
 use super::coupling::{
     finish_lanes, predicted_approach, prepare_sliced, CoupledRoller, Prepared, RollerMemory,
@@ -59,30 +63,32 @@ impl<const S: usize> Lockstep<'_, S> {
         }
     }
 
-    /// Eight lanes: groups of eight one at a time; a last group of four rollers or fewer in
-    /// four lanes (`F32x4`: half the idle lanes to gather and look up), taken through the
-    /// stages together with the group of eight before it (whose work hides its chains'
-    /// latency). A last group of five to seven rollers takes eight lanes alone.
+    /// Eight lanes: up to three groups taken through the stages together (their work hides
+    /// each other's chains' latency; 21 rollers, the most a bearing has, are three groups), a
+    /// last group of four rollers or fewer in four lanes (`F32x4`: half the idle lanes to
+    /// gather and look up).
     #[inline(always)]
     fn solve_eights(&self, rollers: Group<'_>) {
-        let count = rollers.places.len();
-        let tail = count % LANES;
-        let paired = if (1..=4).contains(&tail) && count > LANES {
-            LANES + tail
-        } else {
-            0
-        };
-        let (alone, last) = rollers.split_at(count - paired);
-        for group in alone.chunks() {
-            if group.places.len() <= 4 {
-                self.solve_group::<F32x4, 4>(group);
+        let mut rest = rollers;
+        while !rest.places.is_empty() {
+            let (chunk, next) = rest.split_at(3 * LANES);
+            rest = next;
+            let count = chunk.places.len();
+            let (a, b) = chunk.split_at(LANES);
+            let (b, c) = b.split_at(LANES);
+            if count <= 4 {
+                self.solve_group::<F32x4, 4>(a);
+            } else if count <= LANES {
+                self.solve_group::<Wide, LANES>(a);
+            } else if count <= LANES + 4 {
+                self.solve_two::<Wide, LANES, F32x4, 4>(a, b);
+            } else if count <= 2 * LANES {
+                self.solve_two::<Wide, LANES, Wide, LANES>(a, b);
+            } else if count <= 2 * LANES + 4 {
+                self.solve_three::<Wide, LANES, F32x4, 4>([a, b], c);
             } else {
-                self.solve_group::<Wide, LANES>(group);
+                self.solve_three::<Wide, LANES, Wide, LANES>([a, b], c);
             }
-        }
-        if paired > 0 {
-            let (eight, four) = last.split_at(LANES);
-            self.solve_two::<Wide, LANES, F32x4, 4>(eight, four);
         }
     }
 
@@ -138,6 +144,34 @@ impl<const S: usize> Lockstep<'_, S> {
         }
         self.finish(&prepared_a, &mut memory_a, a);
         self.finish(&prepared_b, &mut memory_b, b);
+    }
+
+    /// Three groups, two in the lanes of `A` and the last in those of `C`, stage by stage.
+    #[inline(always)]
+    fn solve_three<
+        A: Real<PerLane<f32> = [f32; LA]>,
+        const LA: usize,
+        C: Real<PerLane<f32> = [f32; LC]>,
+        const LC: usize,
+    >(
+        &self,
+        [a, b]: [Group<'_>; 2],
+        c: Group<'_>,
+    ) {
+        let (mut memory_a, geometric_a, approach_a, loads_a) = self.slice::<A, LA>(&a);
+        let (mut memory_b, geometric_b, approach_b, loads_b) = self.slice::<A, LA>(&b);
+        let (mut memory_c, geometric_c, approach_c, loads_c) = self.slice::<C, LC>(&c);
+        let mut prepared_a = prepare_sliced(loads_a, approach_a, geometric_a, &memory_a);
+        let mut prepared_b = prepare_sliced(loads_b, approach_b, geometric_b, &memory_b);
+        let mut prepared_c = prepare_sliced(loads_c, approach_c, geometric_c, &memory_c);
+        for _ in 0..NEWTON_ITERATIONS {
+            prepared_a.newton.iterate(self.films);
+            prepared_b.newton.iterate(self.films);
+            prepared_c.newton.iterate(self.films);
+        }
+        self.finish(&prepared_a, &mut memory_a, a);
+        self.finish(&prepared_b, &mut memory_b, b);
+        self.finish(&prepared_c, &mut memory_c, c);
     }
 
     /// One group of at most `L` rollers, in the lanes of `T`.
@@ -213,20 +247,6 @@ impl<'a> Group<'a> {
             },
         )
     }
-
-    /// Groups of [`LANES`] rollers, the last one short.
-    #[inline(always)]
-    fn chunks(self) -> impl Iterator<Item = Group<'a>> {
-        self.out
-            .chunks_mut(LANES)
-            .zip(self.memory.chunks_mut(LANES))
-            .zip(self.places.chunks(LANES))
-            .map(|((out, memory), places)| Group {
-                places,
-                memory,
-                out,
-            })
-    }
 }
 
 #[cfg(test)]
@@ -240,14 +260,14 @@ mod tests {
     use crate::params::{reduced_modulus, BearingGeometry, Crown, Material};
 
     /// The grouped lanes give every roller the result and the memory of its solve alone (the
-    /// M4's `prepare_roller`, Newton steps, `finish_roller`), bit for bit: 17, 13, 12, 9 and
-    /// 8 rollers — with eight lanes two full groups and a last one of one roller (in four
-    /// lanes), a full group and a short one of five, a full one and four rollers in four
-    /// lanes, a full one and one, one full group; with four lanes, four full groups and one
-    /// roller, three and one, three, two and one, two — crowned hub-bearing rollers from
-    /// separated (−9 µm) to heavily
-    /// loaded (+12 µm), tilted both ways, over three steps from a cold start with the
-    /// geometry moving. Every stage of the host's solve is in the chain: predicted approach,
+    /// M4's `prepare_roller`, Newton steps, `finish_roller`), bit for bit, for 25, 21, 17, 13,
+    /// 20, 12, 9, 8 and 4 rollers: with eight lanes every grouping of `solve_eights` — three
+    /// groups of eight and then one roller in four lanes, two of eight and five, two of eight
+    /// and one or four in four lanes, eight and five, eight and one or four in four lanes, one
+    /// group of eight, four in four lanes — and with four lanes pairs of groups, with a last
+    /// group alone or short. Crowned hub-bearing rollers from separated (−9 µm) to heavily
+    /// loaded (+12 µm at 17 rollers, +22 µm at 25), tilted both ways, over three steps from a
+    /// cold start with the geometry moving. Every stage of the host's solve is in the chain: predicted approach,
     /// slice pass (`evaluate_lanes`), power-law fit and start (`prepare_sliced`), Newton
     /// steps, finish and memory (`finish_lanes`), groups and idle lanes.
     #[test]
@@ -315,6 +335,8 @@ mod tests {
             }
             assert!(carrying > 3 && carrying < 3 * Z - 3, "{carrying}");
         }
+        check::<25>();
+        check::<21>();
         check::<17>();
         check::<13>();
         check::<20>();
