@@ -115,9 +115,9 @@ impl<T: Real> RollerMemory<T> {
         }
     }
 
-    /// The memories of the rollers in the first `out.len()` lanes into `out` ([`Self::lane`]
-    /// lane by lane): each field's register taken apart once, then read lane by lane (the
-    /// host's lockstep stages; idle lanes beyond `out` are not read).
+    /// The memories of the rollers in the first `out.len()` lanes into `out`: each field's
+    /// register taken apart once, then read lane by lane (the host's lockstep stages; idle
+    /// lanes beyond `out` are not read).
     #[inline(always)]
     pub(crate) fn store_lanes(&self, out: &mut [RollerMemory]) {
         let ln_load = self.ln_load.to_per_lane();

@@ -1,5 +1,5 @@
 //! AVX/AVX2 (x86-64 built with `target-feature=+avx2`): eight f32 lanes in one 256-bit
-//! register, one instruction per operation and lane group — [`super::sse`]'s operations at
+//! register, one instruction per operation and lane group — `sse.rs`'s operations at
 //! twice the width, so that 17 rollers take three groups instead of five.
 //!
 //! Each operation is the IEEE operation of the one-number code in every lane (Intel® 64 and

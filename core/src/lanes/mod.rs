@@ -196,7 +196,7 @@ pub(crate) use simd::{F32x4, Mask4};
 pub(crate) use avx::{F32x8, Mask8};
 
 /// The host's lane type for the lockstep stages: the widest register the build may use —
-/// eight lanes ([`F32x8`]) where AVX2 is enabled (the workspace's `.cargo/config.toml` enables
+/// eight lanes (`F32x8`) where AVX2 is enabled (the workspace's `.cargo/config.toml` enables
 /// it for x86-64 Linux hosts), else four ([`F32x4`]: SSE on any x86-64, an array elsewhere).
 #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
 pub(crate) type Wide = F32x8;
