@@ -514,9 +514,7 @@ impl<T: Real> Finished<T> {
             regimes: regime_axes.map(|axis| axis.at(ln_load)),
         }
     }
-}
 
-impl<T: Real> Finished<T> {
     /// The results of the rollers in the first `out.len()` lanes into `out` ([`Self::roller`]
     /// lane by lane): each field's register taken apart once, then read lane by lane (the
     /// host's lockstep stages; idle lanes beyond `out` are not read).

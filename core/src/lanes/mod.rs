@@ -337,9 +337,8 @@ real_lanes!(
 );
 
 /// SSE (baseline on every x86-64): one instruction per operation and lane group. (Builds with
-/// AVX2 use `F32x8` for the host's lanes, and these four-lane ones only in the tests.)
+/// AVX2 use them for a last group of four rollers or fewer.)
 #[cfg(target_arch = "x86_64")]
-#[cfg_attr(target_feature = "avx2", allow(dead_code))]
 #[path = "sse.rs"]
 mod simd;
 
