@@ -1,4 +1,5 @@
-//! Real-time scheduling of the timed replay loop (`hil-sim replay --realtime`).
+//! Real-time scheduling of the timed replay loop (`hil-sim replay --realtime`, asked for by
+//! default).
 //!
 //! A HIL rig runs its bearing loop as a real-time thread on a core of its own. What a process
 //! can do for itself on Linux is done here for the duration of the timed loop only: the
@@ -30,6 +31,28 @@ impl Realtime {
             cpu: cpus.saturating_sub(1),
             priority: 80,
         }
+    }
+
+    /// Whether the request itself is valid: a CPU this process may use and a priority in
+    /// `SCHED_FIFO`'s range (1–99 on Linux). A bad request is the user's error in every
+    /// `--realtime` mode; only the system's refusal of a valid one lets `auto` fall back.
+    pub fn check(&self) -> Result<(), String> {
+        let cpus = std::thread::available_parallelism().map_or(1, usize::from);
+        // 1024: glibc's CPU_SETSIZE, the CPUs a `cpu_set_t` can name.
+        if self.cpu >= cpus || self.cpu >= 1024 {
+            return Err(format!(
+                "--rt-cpu {} does not exist: this process may use CPUs 0 … {}",
+                self.cpu,
+                cpus.saturating_sub(1)
+            ));
+        }
+        if !(1..=99).contains(&self.priority) {
+            return Err(format!(
+                "--rt-priority {} is outside SCHED_FIFO's 1 … 99",
+                self.priority
+            ));
+        }
+        Ok(())
     }
 }
 
@@ -80,7 +103,7 @@ mod linux {
     fn os_error(what: &str) -> String {
         let e = io::Error::last_os_error();
         let hint = if e.raw_os_error() == Some(libc::EPERM) {
-            " (real-time scheduling needs root or CAP_SYS_NICE; run without --realtime, or \
+            " (real-time scheduling needs root or CAP_SYS_NICE; run with --realtime off, or \
              e.g. `sudo setcap cap_sys_nice,cap_ipc_lock+ep target/release/hil-sim`)"
         } else {
             ""
@@ -89,28 +112,11 @@ mod linux {
     }
 
     pub(super) fn enter(request: Realtime) -> Result<Saved, String> {
-        let cpus = std::thread::available_parallelism().map_or(1, usize::from);
-        if request.cpu >= cpus || request.cpu >= libc::CPU_SETSIZE as usize {
-            return Err(format!(
-                "--rt-cpu {} does not exist: this process may use CPUs 0 … {}",
-                request.cpu,
-                cpus.saturating_sub(1)
-            ));
-        }
+        request.check()?;
         // SAFETY: plain calls into the C library on the calling thread (pid 0), with pointers
         // to properly initialised local values that outlive the calls; `cpu_set_t` and
         // `sched_param` are plain data for which all-zero bytes are a valid (empty) value.
         unsafe {
-            let (min, max) = (
-                libc::sched_get_priority_min(libc::SCHED_FIFO),
-                libc::sched_get_priority_max(libc::SCHED_FIFO),
-            );
-            if request.priority < min || request.priority > max {
-                return Err(format!(
-                    "--rt-priority {} is outside SCHED_FIFO's {min} … {max}",
-                    request.priority
-                ));
-            }
             let mut saved = Saved {
                 policy: libc::sched_getscheduler(0),
                 param: std::mem::zeroed(),

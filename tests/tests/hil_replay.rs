@@ -67,6 +67,7 @@ fn a_trace_at_static_equilibrium_replays_to_the_applied_load() {
         limits: Limits::default(),
         min_reference_force_n: 1.0,
         realtime: None,
+        realtime_fallback: false,
         pause_probe_s: 0.0,
     };
     let run = replay(
@@ -75,6 +76,7 @@ fn a_trace_at_static_equilibrium_replays_to_the_applied_load() {
             stepper: product.stepper.as_mut(),
             reference: None,
             dry: None,
+            warm_up: None,
         },
         &config,
         None,

@@ -44,20 +44,35 @@ pub struct ReplayArgs {
     #[arg(long)]
     pub json: bool,
     /// Run the timed loop as a real-time thread: SCHED_FIFO, pinned to one CPU, memory
-    /// locked (Linux; needs root or CAP_SYS_NICE). The accuracy pass runs normally after it.
+    /// locked (Linux; needs root or CAP_SYS_NICE), so that no other process on the machine can
+    /// take the CPU from it for a scheduler slice (4 ms at HZ = 250) in the middle of a step.
+    /// `auto` asks for it and, if refused, runs under the ordinary policy and says so in the
+    /// report; `on` (also plain `--realtime`) fails when refused. The accuracy pass runs
+    /// normally after it.
+    #[arg(long, value_enum, default_value_t = RealtimeMode::Auto, num_args = 0..=1, default_missing_value = "on")]
+    pub realtime: RealtimeMode,
+    /// CPU of the timed loop under real-time scheduling; default: the last one.
     #[arg(long)]
-    pub realtime: bool,
-    /// CPU of the timed loop under --realtime; default: the last one.
-    #[arg(long, requires = "realtime")]
     pub rt_cpu: Option<usize>,
-    /// SCHED_FIFO priority under --realtime (1–99).
-    #[arg(long, requires = "realtime", default_value_t = 80)]
+    /// SCHED_FIFO priority under real-time scheduling (1–99).
+    #[arg(long, default_value_t = 80)]
     pub rt_priority: i32,
     /// Spin this long (s, 0–60) after the timed loop, on its CPU and policy, counting the
     /// machine's pauses: the report then says how many steps over the budget the machine alone
     /// explains (0: no probe).
     #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
     pub pause_probe_s: f64,
+}
+
+/// Whether the timed loop runs under real-time scheduling.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum RealtimeMode {
+    /// Ask for it; run under the ordinary policy if the system refuses.
+    Auto,
+    /// Require it: the replay fails if the system refuses.
+    On,
+    /// The ordinary scheduling policy.
+    Off,
 }
 
 /// Runs the replay; exit status 2 when the budget or the accuracy limits are missed.
@@ -88,6 +103,20 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
         .first()
         .ok_or_else(|| anyhow!("the trace has no samples"))?;
     let mut product = wiring::product(&trace.meta, args.film, first).map_err(|e| anyhow!(e))?;
+    // A second, identical stepper that warms the caches before the timed loop (engine doc).
+    let mut warm_up = wiring::product(&trace.meta, args.film, first).map_err(|e| anyhow!(e))?;
+    let realtime = match args.realtime {
+        RealtimeMode::Off => None,
+        RealtimeMode::Auto | RealtimeMode::On => {
+            let default = Realtime::default_for_this_machine();
+            let request = Realtime {
+                cpu: args.rt_cpu.unwrap_or(default.cpu),
+                priority: args.rt_priority,
+            };
+            request.check().map_err(|e| anyhow!(e))?;
+            Some(request)
+        }
+    };
     let config = ReplayConfig {
         rate_hz,
         reference_every: args.reference_every,
@@ -97,13 +126,8 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
             ..Limits::default()
         },
         min_reference_force_n: 1.0,
-        realtime: args.realtime.then(|| {
-            let default = Realtime::default_for_this_machine();
-            Realtime {
-                cpu: args.rt_cpu.unwrap_or(default.cpu),
-                priority: args.rt_priority,
-            }
-        }),
+        realtime,
+        realtime_fallback: args.realtime == RealtimeMode::Auto,
         pause_probe_s,
     };
     let points = if args.reference_every == 0 || product.reference.is_none() {
@@ -135,6 +159,7 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
                 .dry
                 .as_mut()
                 .map(|d| d.as_mut() as &mut dyn bearing_hil::replay::BearingStepper),
+            warm_up: Some(warm_up.stepper.as_mut()),
         },
         &config,
         Some(&bar),

@@ -6,6 +6,15 @@
 //! deadline is a miss and its lateness is recorded. The sleep before a release ends 100 µs
 //! early and the rest is spun, because a thread woken from `sleep` can be a scheduler tick late.
 //!
+//! Warm-up: the harness's own setup between priming and the first step (allocating and filling
+//! the output buffers, megabytes for a long trace) evicts the CPU caches, which no real-time
+//! loop does between two steps; the first step then paid 13–18 µs for fetching the step's code
+//! and tables, one of the twenty steps a 20 000-step trace may spend over the budget. So a
+//! second, identical stepper ([`Parts::warm_up`]) is stepped over the first [`WARM_UP_STEPS`]
+//! samples right before the timed loop, on its CPU: the code and the model's tables are then
+//! cached, while the timed stepper's own state is untouched (its outputs stay those of a
+//! plain replay). The warm-up's first step is reported as the cold-cache step time.
+//!
 //! Accuracy: after the timed loop, every K-th sample is recomputed by the reference with the
 //! rollers where the stepper had them, and the dry stepper (if any) replays every sample (it
 //! may integrate state such as the cage angle, so it cannot skip samples). Nothing of this runs
@@ -36,6 +45,9 @@ pub struct ReplayConfig {
     pub min_reference_force_n: f64,
     /// Run the timed loop under real-time scheduling (`crate::realtime`).
     pub realtime: Option<Realtime>,
+    /// When the system refuses real-time scheduling: run the timed loop under the ordinary
+    /// policy and record why (true), or fail the replay (false).
+    pub realtime_fallback: bool,
     /// Spin this long (s) after the timed loop, under its scheduling, measuring the machine's
     /// pauses (`super::pauses`); 0 skips the probe.
     pub pause_probe_s: f64,
@@ -49,7 +61,14 @@ pub struct Parts<'a> {
     pub reference: Option<&'a mut dyn AccuracyReference>,
     /// The dry model (h ≡ 0), whose force error is reported beside the stepper's.
     pub dry: Option<&'a mut dyn BearingStepper>,
+    /// A second instance of `stepper`, stepped untimed over the first samples right before the
+    /// timed loop so that the step's code and tables are cached (module doc); `None` starts the
+    /// timed loop with whatever the caches hold.
+    pub warm_up: Option<&'a mut dyn BearingStepper>,
 }
+
+/// Samples the warm-up stepper is stepped over before the timed loop.
+pub const WARM_UP_STEPS: usize = 16;
 
 /// Deadline statistics of a paced replay.
 #[derive(Clone, Copy, Debug, PartialEq, Default, serde::Serialize)]
@@ -138,6 +157,11 @@ pub struct ReplayRun {
     pub sources: SourceCounts,
     /// The real-time scheduling the timed loop ran under, if any.
     pub realtime: Option<Realtime>,
+    /// Why real-time scheduling was requested but not granted (`realtime_fallback`).
+    pub realtime_refused: Option<String>,
+    /// The warm-up stepper's first step (ns): the step with the caches as the harness's setup
+    /// left them. `None` without a warm-up.
+    pub cold_step_ns: Option<u64>,
     /// The machine's pauses, measured right after the timed loop (`super::pauses`).
     pub pauses: Option<PauseProbe>,
 }
@@ -147,7 +171,8 @@ pub struct ReplayRun {
 pub struct ReplayError {
     /// Sample index.
     pub index: usize,
-    /// Which model failed: `"stepper"`, `"reference"` or `"dry stepper"`.
+    /// What failed: `"stepper"`, `"warm-up stepper"`, `"reference"`, `"dry stepper"` or
+    /// `"real-time scheduling"`.
     pub stage: &'static str,
     /// Its reason.
     pub fault: StepFault,
@@ -187,7 +212,7 @@ fn force_rel_err(force: [f32; 2], reference: [f64; 2]) -> f64 {
 /// once per reference sample.
 pub fn replay(
     trace: &Trace,
-    parts: Parts<'_>,
+    mut parts: Parts<'_>,
     config: &ReplayConfig,
     progress: Option<&indicatif::ProgressBar>,
 ) -> Result<ReplayRun, ReplayError> {
@@ -196,15 +221,22 @@ pub fn replay(
     let mut outputs = vec![StepOutputs::default(); n];
     let mut pacing = config.paced.then(Pacing::default);
     // Real-time scheduling for the timed loop alone (dropped before the accuracy pass).
-    let realtime = config
-        .realtime
-        .map(Guard::enter)
-        .transpose()
-        .map_err(|reason| ReplayError {
-            index: 0,
-            stage: "real-time scheduling",
-            fault: StepFault { reason },
-        })?;
+    let (realtime, realtime_refused) = match config.realtime.map(Guard::enter) {
+        None => (None, None),
+        Some(Ok(guard)) => (Some(guard), None),
+        Some(Err(reason)) if config.realtime_fallback => (None, Some(reason)),
+        Some(Err(reason)) => {
+            return Err(ReplayError {
+                index: 0,
+                stage: "real-time scheduling",
+                fault: StepFault { reason },
+            })
+        }
+    };
+    let cold_step_ns = match parts.warm_up.as_deref_mut() {
+        Some(warm_up) => Some(warm(warm_up, &trace.samples)?),
+        None => None,
+    };
     let start = Instant::now();
     for (index, ((sample, time), out)) in trace
         .samples
@@ -217,15 +249,8 @@ pub fn replay(
         if config.paced {
             wait_until(release);
         }
-        let t0 = Instant::now();
-        let result = parts.stepper.step(black_box(sample), black_box(out));
-        let t1 = Instant::now();
-        result.map_err(|fault| ReplayError {
-            index,
-            stage: "stepper",
-            fault,
-        })?;
-        *time = u64::try_from((t1 - t0).as_nanos()).unwrap_or(u64::MAX);
+        let t1;
+        (*time, t1) = timed_step(parts.stepper, sample, out, index, "stepper")?;
         if let Some(p) = pacing.as_mut() {
             let deadline = release + Duration::from_secs_f64(1.0 / config.rate_hz);
             if t1 > deadline {
@@ -242,6 +267,7 @@ pub fn replay(
     // Still on the timed loop's CPU and policy: the pauses the steps saw.
     let pauses = (config.pause_probe_s > 0.0)
         .then(|| PauseProbe::run(Duration::from_secs_f64(config.pause_probe_s.min(60.0))));
+    let realtime_granted = realtime.is_some();
     drop(realtime);
 
     let mut sources = SourceCounts::default();
@@ -262,11 +288,47 @@ pub fn replay(
         force_errors: Vec::new(),
         dry_force_errors: Vec::new(),
         sources,
-        realtime: config.realtime,
+        realtime: config.realtime.filter(|_| realtime_granted),
+        realtime_refused,
+        cold_step_ns,
         pauses,
     };
     accuracy_pass(trace, parts, config, progress, &mut run)?;
     Ok(run)
+}
+
+/// One step of `stepper` bracketed by two clock reads: its time (ns) and when it ended.
+#[inline(always)]
+fn timed_step(
+    stepper: &mut dyn BearingStepper,
+    sample: &Sample,
+    out: &mut StepOutputs,
+    index: usize,
+    stage: &'static str,
+) -> Result<(u64, Instant), ReplayError> {
+    let t0 = Instant::now();
+    let result = stepper.step(black_box(sample), black_box(out));
+    let t1 = Instant::now();
+    result.map_err(|fault| ReplayError {
+        index,
+        stage,
+        fault,
+    })?;
+    Ok((u64::try_from((t1 - t0).as_nanos()).unwrap_or(u64::MAX), t1))
+}
+
+/// Steps `warm_up` over the first [`WARM_UP_STEPS`] samples and returns the first step's time
+/// (ns); the others are not kept.
+fn warm(warm_up: &mut dyn BearingStepper, samples: &[Sample]) -> Result<u64, ReplayError> {
+    let mut out = StepOutputs::default();
+    let mut cold_ns = 0;
+    for (index, sample) in samples.iter().take(WARM_UP_STEPS).enumerate() {
+        let (ns, _) = timed_step(warm_up, sample, &mut out, index, "warm-up stepper")?;
+        if index == 0 {
+            cold_ns = ns;
+        }
+    }
+    Ok(cold_ns)
 }
 
 /// Steps the dry model over every sample and returns its outputs.

@@ -63,6 +63,11 @@ pub struct ReplayReport {
     /// The real-time scheduling of the timed loop (`--realtime`): CPU and SCHED_FIFO priority;
     /// `null` under the ordinary policy.
     pub realtime: Option<Realtime>,
+    /// Why real-time scheduling was asked for and refused (`--realtime auto`); `null` otherwise.
+    pub realtime_refused: Option<String>,
+    /// The warm-up stepper's first step (ns), with the caches as the harness's setup left them
+    /// (`super::engine` module doc); `null` without a warm-up.
+    pub cold_step_ns: Option<u64>,
     /// The machine's pauses on the timed loop's CPU and what they alone cost the budget
     /// (`super::pauses`); `null` when the probe did not run. Context for the budget verdict,
     /// which it does not change.
@@ -144,6 +149,8 @@ impl ReplayReport {
             film_contacts_compared: run.film_errors.len(),
             pacing: run.pacing,
             realtime: run.realtime,
+            realtime_refused: run.realtime_refused.clone(),
+            cold_step_ns: run.cold_step_ns,
             environment,
             reasons,
         })
@@ -207,11 +214,22 @@ impl ReplayReport {
                 );
             }
             None => {
+                let why = self.realtime_refused.as_ref().map_or(String::new(), |r| {
+                    format!(" (real-time scheduling refused: {r})")
+                });
                 let _ = writeln!(
                     md,
-                    "Timed loop under the ordinary scheduling policy (`--realtime` pins it to a CPU under SCHED_FIFO).\n"
+                    "Timed loop under the ordinary scheduling policy{why}; another process can take its CPU for a scheduler slice mid-step (`--realtime` pins it to a CPU under SCHED_FIFO).\n"
                 );
             }
+        }
+        if let Some(cold) = self.cold_step_ns {
+            let _ = writeln!(
+                md,
+                "Warm-up: a second stepper took {} untimed steps right before the timed loop; its first, with the caches as the harness's setup left them, took {:.1} µs.\n",
+                super::engine::WARM_UP_STEPS,
+                cold as f64 / 1e3
+            );
         }
         if let Some(e) = &self.environment {
             let _ = writeln!(

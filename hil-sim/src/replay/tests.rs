@@ -7,7 +7,7 @@
 //! their difference is f32 rounding (≈ 1e-6 relative): an independent check that the engine
 //! pairs each step with the reference of the same state, rollers and contacts.
 
-use super::engine::{replay, Parts, ReplayConfig, ReplayError, ReplayRun};
+use super::engine::{replay, Parts, ReplayConfig, ReplayError, ReplayRun, WARM_UP_STEPS};
 use super::report::ReplayReport;
 use super::stats::{budget_verdict, percentile, Limits, StepTimeStats};
 use super::*;
@@ -168,6 +168,7 @@ fn config(reference_every: usize, paced: bool, rate: f64) -> ReplayConfig {
         limits: Limits::default(),
         min_reference_force_n: 1.0,
         realtime: None,
+        realtime_fallback: false,
         pause_probe_s: 0.0,
     }
 }
@@ -184,6 +185,7 @@ fn replay_stepper_only(
             stepper,
             reference: None,
             dry: None,
+            warm_up: None,
         },
         config,
         None,
@@ -235,6 +237,7 @@ fn exact_reference_passes_and_the_dry_model_is_worse() {
             stepper: &mut stepper,
             reference: Some(&mut reference),
             dry: Some(&mut dry),
+            warm_up: None,
         },
         &cfg,
         None,
@@ -305,6 +308,7 @@ fn a_film_off_by_five_percent_fails_accuracy_with_the_reason() {
             stepper: &mut stepper,
             reference: Some(&mut reference),
             dry: None,
+            warm_up: None,
         },
         &cfg,
         None,
@@ -349,6 +353,7 @@ fn a_stepper_fault_names_the_sample() {
             stepper: &mut stepper,
             reference: None,
             dry: None,
+            warm_up: None,
         },
         &config(1, false, 10_000.0),
         None,
@@ -371,6 +376,7 @@ fn paced_replay_counts_every_missed_deadline() {
             stepper: &mut stepper,
             reference: None,
             dry: None,
+            warm_up: None,
         },
         &config(0, true, 2000.0),
         None,
@@ -394,6 +400,7 @@ fn paced_replay_runs_at_wall_clock_rate() {
             stepper: &mut stepper,
             reference: None,
             dry: None,
+            warm_up: None,
         },
         &config(0, true, 1000.0),
         None,
@@ -451,6 +458,85 @@ fn realtime_scheduling_covers_the_timed_loop_only() {
     };
     let e = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap_err();
     assert!(e.fault.reason.contains("does not exist"), "{e}");
+}
+
+/// `--realtime auto`: where real-time scheduling is refused (here: a CPU that does not exist),
+/// the timed loop runs under the ordinary policy and the run and the report say why, instead of
+/// the replay failing as it does without the fallback (previous test).
+#[cfg(target_os = "linux")]
+#[test]
+fn refused_realtime_falls_back_when_asked() {
+    use crate::realtime::Realtime;
+    let trace = trace(50, 10_000.0);
+    let mut stepper = ClosedFormStepper::new(true);
+    let cfg = ReplayConfig {
+        realtime: Some(Realtime {
+            cpu: 1 << 20,
+            priority: 10,
+        }),
+        realtime_fallback: true,
+        ..config(0, false, 10_000.0)
+    };
+    let run = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap();
+    assert_eq!(run.realtime, None);
+    assert_eq!(run.step_times_ns.len(), 50);
+    let reason = run.realtime_refused.clone().unwrap();
+    assert!(reason.contains("does not exist"), "{reason}");
+    let report =
+        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+    assert_eq!(report.realtime_refused.as_deref(), Some(reason.as_str()));
+    assert!(report.markdown().contains(&format!(
+        "ordinary scheduling policy (real-time scheduling refused: {reason})"
+    )));
+    let json = serde_json::to_value(&report).unwrap();
+    assert_eq!(json["realtime_refused"], serde_json::json!(reason));
+    assert!(json["realtime"].is_null());
+}
+
+/// The warm-up steps a second stepper over the first `WARM_UP_STEPS` samples before the timed
+/// loop and leaves the timed one alone: with the test double's integrated state (cage angle,
+/// last time), any extra step of the timed stepper would change its outputs, and they equal a
+/// replay's without warm-up sample for sample. The warm-up's first step is reported.
+#[test]
+fn warm_up_steps_a_second_stepper_only() {
+    let trace = trace(100, 10_000.0);
+    let cfg = config(0, false, 10_000.0);
+    let mut plain = ClosedFormStepper::new(true);
+    let without = replay_stepper_only(&trace, &mut plain, &cfg).unwrap();
+    let mut stepper = ClosedFormStepper::new(true);
+    let mut warm = ClosedFormStepper::new(true);
+    let with = replay(
+        &trace,
+        Parts {
+            stepper: &mut stepper,
+            reference: None,
+            dry: None,
+            warm_up: Some(&mut warm),
+        },
+        &cfg,
+        None,
+    )
+    .unwrap();
+    assert_eq!(warm.steps, WARM_UP_STEPS);
+    assert_eq!(stepper.steps, 100);
+    assert_eq!(with.outputs, without.outputs);
+    assert_eq!(without.cold_step_ns, None);
+    let report =
+        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &with).unwrap();
+    assert_eq!(report.cold_step_ns, with.cold_step_ns);
+    assert!(report.cold_step_ns.is_some());
+    assert!(report.markdown().contains(&format!(
+        "Warm-up: a second stepper took {WARM_UP_STEPS} untimed steps"
+    )));
+    let no_warm_up = ReplayReport::build(
+        &trace.meta,
+        FilmChoice::Int,
+        "double".into(),
+        &cfg,
+        &without,
+    )
+    .unwrap();
+    assert!(!no_warm_up.markdown().contains("Warm-up"));
 }
 
 /// The pause probe runs when asked, lands in the report (JSON `environment`, a markdown line)

@@ -23,7 +23,7 @@
 
 use faer::linalg::matmul::triangular::{matmul, BlockStructure};
 use faer::linalg::solvers::Solve;
-use faer::{Accum, Mat, Par, Side};
+use faer::{Accum, Mat, MatRef, Par, Side};
 use rayon::prelude::*;
 
 use super::mlp::Mlp;
@@ -124,33 +124,36 @@ fn objective(net: &Mlp, data: &TrainingData, params: &[f64]) -> f64 {
 fn normal_equations(net: &Mlp, data: &TrainingData) -> (Mat<f64>, Vec<f64>) {
     let p = net.parameter_count();
     let n = data.x.len();
-    let rows: Vec<(Vec<f64>, Vec<Vec<f64>>)> = data
-        .x
-        .par_iter()
-        .map(|xi| net.forward_with_jacobian(xi))
-        .collect();
     let d2 = 1.0 / (2 * n).max(1) as f64;
-    // Jᵀ, one column per (sample, output): contiguous in faer's column-major storage.
-    let mut jt = Mat::<f64>::zeros(p, 2 * n);
+    // Jᵀ in column-major storage, one column of p per (sample, output). Each sample writes its
+    // two columns (and its two residuals) in place, so the Jacobian is held once: 4x20 on 5000
+    // samples is 80 MB, not twice that.
+    let mut jt = vec![0.0; p * 2 * n];
+    let mut residuals = vec![0.0; 2 * n];
+    jt.par_chunks_mut(2 * p.max(1))
+        .zip(residuals.par_chunks_mut(2))
+        .zip(data.x.par_iter().zip(data.t.par_iter()))
+        .for_each(|((columns, e), (xi, ti))| {
+            let (y, jac) = net.forward_with_jacobian(xi);
+            for (o, (column, e)) in columns.chunks_mut(p.max(1)).zip(e.iter_mut()).enumerate() {
+                column.copy_from_slice(&jac[o]);
+                *e = y[o] - ti[o];
+            }
+        });
+    // The gradient Jᵀe/(2N), summed in sample order (the same order on every run).
     let mut gradient = vec![0.0; p];
-    for (s, ((y, jac), t)) in rows.iter().zip(data.t).enumerate() {
-        for o in 0..2 {
-            let e = y[o] - t[o];
-            let col = jt.col_mut(2 * s + o).try_as_col_major_mut();
-            if let Some(col) = col {
-                col.as_slice_mut().copy_from_slice(&jac[o]);
-            }
-            for (g, v) in gradient.iter_mut().zip(&jac[o]) {
-                *g += d2 * e * v;
-            }
+    for (column, e) in jt.chunks(p.max(1)).zip(&residuals) {
+        for (g, v) in gradient.iter_mut().zip(column) {
+            *g += d2 * e * v;
         }
     }
+    let jt = MatRef::from_column_major_slice(&jt, p, 2 * n);
     let mut jtj = Mat::<f64>::zeros(p, p);
     matmul(
         jtj.as_mut(),
         BlockStructure::TriangularLower,
         Accum::Replace,
-        jt.as_ref(),
+        jt,
         BlockStructure::Rectangular,
         jt.transpose(),
         BlockStructure::Rectangular,

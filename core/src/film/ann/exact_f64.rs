@@ -148,7 +148,7 @@ impl<const I: usize, const O: usize> ExactF64<I, O> {
             multiplier_low_scaled: (multiplier & 0xfff) as f64 * pow2(-12),
             outer_scale: pow2(-(shift as i32 - 12)),
             scale: multiplier as f64 * pow2(-(shift as i32)),
-            direct: shift <= 38 && (multiplier >> multiplier.trailing_zeros()) >= 1 << 16,
+            direct: super::int::direct_requantisation(multiplier, shift),
         }
     }
 
