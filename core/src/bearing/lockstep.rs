@@ -13,8 +13,8 @@
 //!
 //! Measured choices (best 1000-step chunk, 17 rollers, 10 slices, integer network, one pinned
 //! core of the project's AMD EPYC host; the harness of the README's "Host build: AVX2 lanes"):
-//! with four lanes, pairs of groups (1.41 µs one after another 1.57; three in flight no faster
-//! than two, 1.44 µs). With eight lanes, 17
+//! with four lanes, pairs of groups (pairs 1.43 µs, one group at a time 1.57 µs, three in
+//! flight 1.44 µs). With eight lanes, 17
 //! rollers took 1.21 µs one group at a time and 1.29 µs in pairs while the results were read
 //! out lane by lane through a call per lane; reading each field's register once
 //! (`store_rollers`, `store_lanes`, only for the group's rollers) made both ≈ 1.12 µs;
