@@ -115,16 +115,34 @@ impl<T: Real> RollerMemory<T> {
         }
     }
 
-    /// The memory of the roller in lane `i`.
+    /// The memories of the rollers in the first `out.len()` lanes into `out`: each field's
+    /// register taken apart once, then read lane by lane (the host's lockstep stages; idle
+    /// lanes beyond `out` are not read).
     #[inline(always)]
-    pub(crate) fn lane(&self, i: usize) -> RollerMemory {
-        RollerMemory {
-            ln_load: self.ln_load.lane(i),
-            film_m: self.film_m.lane(i),
-            geometric_approach_m: self.geometric_approach_m.lane(i),
-            film_sensitivity: self.film_sensitivity.lane(i),
-            law: self.law.lane(i),
-            start_offset: self.start_offset.lane(i),
+    pub(crate) fn store_lanes(&self, out: &mut [RollerMemory]) {
+        let ln_load = self.ln_load.to_per_lane();
+        let film_m = self.film_m.to_per_lane();
+        let geometric_approach_m = self.geometric_approach_m.to_per_lane();
+        let film_sensitivity = self.film_sensitivity.to_per_lane();
+        let offset_m = self.law.offset_m.to_per_lane();
+        let ln_load_ref = self.law.ln_load_ref.to_per_lane();
+        let span_m = self.law.span_m.to_per_lane();
+        let exponent = self.law.exponent.to_per_lane();
+        let start_offset = self.start_offset.to_per_lane();
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = RollerMemory {
+                ln_load: T::item(&ln_load, i),
+                film_m: T::item(&film_m, i),
+                geometric_approach_m: T::item(&geometric_approach_m, i),
+                film_sensitivity: T::item(&film_sensitivity, i),
+                law: PowerLaw {
+                    offset_m: T::item(&offset_m, i),
+                    ln_load_ref: T::item(&ln_load_ref, i),
+                    span_m: T::item(&span_m, i),
+                    exponent: T::item(&exponent, i),
+                },
+                start_offset: T::item(&start_offset, i),
+            };
         }
     }
 }
@@ -174,17 +192,6 @@ impl PowerLaw {
 }
 
 impl<T: Real> PowerLaw<T> {
-    /// The law of lane `i`.
-    #[inline(always)]
-    fn lane(&self, i: usize) -> PowerLaw {
-        PowerLaw {
-            offset_m: self.offset_m.lane(i),
-            ln_load_ref: self.ln_load_ref.lane(i),
-            span_m: self.span_m.lane(i),
-            exponent: self.exponent.lane(i),
-        }
-    }
-
     /// `self` if `condition`, else `other`, field by field without a branch.
     #[inline(always)]
     fn select(&self, condition: T::Mask, other: &Self) -> Self {
@@ -505,6 +512,51 @@ impl<T: Real> Finished<T> {
             softening: self.softening.lane(i),
             film_coupling_m_per_n: self.film_coupling_m_per_n.lane(i),
             regimes: regime_axes.map(|axis| axis.at(ln_load)),
+        }
+    }
+
+    /// The results of the rollers in the first `out.len()` lanes into `out` ([`Self::roller`]
+    /// lane by lane): each field's register taken apart once, then read lane by lane (the
+    /// host's lockstep stages; idle lanes beyond `out` are not read).
+    #[inline(always)]
+    pub(crate) fn store_rollers(&self, regime_axes: &[RegimeAxis; 2], out: &mut [CoupledRoller]) {
+        let load_n = self.load.load_n.to_per_lane();
+        let moment_nm = self.load.moment_nm.to_per_lane();
+        let stiffness_n_per_m = self.load.stiffness_n_per_m.to_per_lane();
+        let stiffness_moment_n = self.load.stiffness_moment_n.to_per_lane();
+        let stiffness_tilt_nm = self.load.stiffness_tilt_nm.to_per_lane();
+        let stiffness_derivative = self.load.stiffness_derivative_n_per_m2.to_per_lane();
+        let approach_m = self.approach_m.to_per_lane();
+        let ln_load = self.ln_load.to_per_lane();
+        let [(central_0, minimum_0), (central_1, minimum_1)] = self.films;
+        let films = [
+            (central_0.to_per_lane(), minimum_0.to_per_lane()),
+            (central_1.to_per_lane(), minimum_1.to_per_lane()),
+        ];
+        let softening = self.softening.to_per_lane();
+        let film_coupling_m_per_n = self.film_coupling_m_per_n.to_per_lane();
+        for (i, o) in out.iter_mut().enumerate() {
+            let ln_load = T::item(&ln_load, i);
+            let [(c0, m0), (c1, m1)] = &films;
+            *o = CoupledRoller {
+                load: RollerLoad {
+                    load_n: T::item(&load_n, i),
+                    moment_nm: T::item(&moment_nm, i),
+                    stiffness_n_per_m: T::item(&stiffness_n_per_m, i),
+                    stiffness_moment_n: T::item(&stiffness_moment_n, i),
+                    stiffness_tilt_nm: T::item(&stiffness_tilt_nm, i),
+                    stiffness_derivative_n_per_m2: T::item(&stiffness_derivative, i),
+                },
+                approach_m: T::item(&approach_m, i),
+                ln_load,
+                films: [
+                    (T::item(c0, i), T::item(m0, i)),
+                    (T::item(c1, i), T::item(m1, i)),
+                ],
+                softening: T::item(&softening, i),
+                film_coupling_m_per_n: T::item(&film_coupling_m_per_n, i),
+                regimes: regime_axes.map(|axis| axis.at(ln_load)),
+            };
         }
     }
 }

@@ -330,11 +330,11 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         let places = parts.places(state);
         // Each roller: its slice pass and power law (`prepare_roller`), NEWTON_ITERATIONS
         // Newton steps, its outputs (`finish_roller`). A superscalar host runs all of that
-        // for four rollers at a time in SIMD lanes, two groups of four in flight (`lockstep`):
-        // each stage is a chain of dependent operations whose latency the core cannot hide
-        // one roller after another. The in-order M4 gains nothing from lanes and would pay
-        // ≈ 4 k instructions of loads and stores for the staged state, so it runs the rollers
-        // one after another. The operations of each roller are the same either way, so are
+        // for eight rollers at a time in SIMD lanes (AVX2; four without it), several groups
+        // in flight (`lockstep`): each stage is a chain of dependent operations whose latency
+        // the core cannot hide one roller after another. The in-order M4 gains nothing from
+        // lanes and would pay ≈ 4 k instructions of loads and stores for the staged state, so
+        // it runs the rollers one after another. The operations of each roller are the same either way, so are
         // the results, bit for bit (tests in `lanes`, `coupling`, `slicing` and `lockstep`;
         // `hil-sim qemu` compares whole traces).
         let mut coupled = [CoupledRoller::default(); Z];

@@ -6,13 +6,9 @@
 //! (on both contacts, hence 2P). Only slices with δ_k > 0 carry load.
 
 use super::law::{BoundLaw, ContactLaw, MAX_APPROACH_M};
-use crate::lanes::{F32x4, Real};
+use crate::lanes::Real;
 use crate::math::{max, min, ninth_root_in_range, select};
 use crate::params::BearingGeometry;
-
-/// Rollers per pass of `SlicedRoller::evaluate_lanes`: four f32 lanes fill an SSE/NEON
-/// register.
-const LANES: usize = 4;
 
 /// Largest roller tilt the slice pass evaluates (rad): twice the largest the operating state
 /// admits, which a roller sees as tilt_y·cos θ − tilt_x·sin θ.
@@ -161,18 +157,19 @@ impl<const S: usize> SlicedRoller<S> {
         }
     }
 
-    /// [`SlicedRoller::evaluate`] for four rollers of this shape at approaches `approach_m`
-    /// and tilts `tilt_rad`, bit for bit, as SIMD lanes: the host's slice pass. The Palmgren
-    /// pass runs the rollers side by side (`evaluate_palmgren_lanes`).
+    /// [`SlicedRoller::evaluate`] for the `L` rollers in the lanes of `T` (the host's: four,
+    /// or eight with AVX2), all of this shape, at approaches `approach_m` and tilts
+    /// `tilt_rad`, bit for bit, as SIMD lanes: the host's slice pass. The Palmgren pass runs
+    /// the rollers side by side (`evaluate_palmgren_lanes`).
     #[inline(always)]
-    pub(crate) fn evaluate_lanes(
+    pub(crate) fn evaluate_lanes<T: Real<PerLane<f32> = [f32; L]>, const L: usize>(
         &self,
-        approach_m: [f32; LANES],
-        tilt_rad: [f32; LANES],
-    ) -> RollerLoads<F32x4> {
+        approach_m: [f32; L],
+        tilt_rad: [f32; L],
+    ) -> RollerLoads<T> {
         match self.law.kind() {
             ContactLaw::Palmgren => self.evaluate_palmgren_lanes(approach_m, tilt_rad),
-            ContactLaw::Lundberg => RollerLoads::from_lanes(&core::array::from_fn(|l| {
+            ContactLaw::Lundberg => RollerLoads::from_lanes(&T::build(|l| {
                 self.evaluate_any(
                     approach_m.get(l).copied().unwrap_or(0.0),
                     tilt_rad.get(l).copied().unwrap_or(0.0),
@@ -206,12 +203,12 @@ impl<const S: usize> SlicedRoller<S> {
     /// overlaps the slices (2.1× the speed of one roller at a time for 17 rollers). The M4
     /// gains nothing and would pay for the staged roots, so it runs one roller at a time.
     #[inline(always)]
-    fn evaluate_palmgren_lanes(
+    fn evaluate_palmgren_lanes<T: Real<PerLane<f32> = [f32; L]>, const L: usize>(
         &self,
-        approach_m: [f32; LANES],
-        tilt_rad: [f32; LANES],
-    ) -> RollerLoads<F32x4> {
-        let mut bounds = [(0.0f32, 0.0f32); LANES];
+        approach_m: [f32; L],
+        tilt_rad: [f32; L],
+    ) -> RollerLoads<T> {
+        let mut bounds = [(0.0f32, 0.0f32); L];
         for ((b, &a), &t) in bounds
             .iter_mut()
             .zip(approach_m.iter())
@@ -219,8 +216,8 @@ impl<const S: usize> SlicedRoller<S> {
         {
             *b = bounded(a, t);
         }
-        let mut approach = [[0.0f32; LANES]; S];
-        let mut root = [[0.0f32; LANES]; S];
+        let mut approach = [[0.0f32; L]; S];
+        let mut root = [[0.0f32; L]; S];
         for (((d, r), &x), &c) in approach
             .iter_mut()
             .zip(root.iter_mut())
@@ -231,16 +228,16 @@ impl<const S: usize> SlicedRoller<S> {
                 (*d, *r) = slice_root(a + x * t + c);
             }
         }
-        let mut sums = PalmgrenSums::<F32x4>::zero();
+        let mut sums = PalmgrenSums::<T>::zero();
         for ((d, r), &x) in approach
             .iter()
             .zip(root.iter())
             .zip(self.positions_m.iter())
         {
             sums.add(
-                F32x4::from_array(*d),
-                F32x4::from_array(*r),
-                F32x4::splat(x),
+                T::from_per_lane(d, |&v| v),
+                T::from_per_lane(r, |&v| v),
+                T::splat(x),
             );
         }
         self.load_from(&sums)
@@ -340,8 +337,9 @@ mod tests {
     const E: f32 = 230.77e9;
 
     /// The lanes of `evaluate_lanes` are the one-roller pass bit for bit: crowned and straight
-    /// rollers, both laws, 17 rollers in groups of four (a short last group, idle lanes at
-    /// zero approach), approaches from separated to deep, tilts of both signs, and NaN.
+    /// rollers, both laws, 17 rollers in groups of four lanes and, where the build has AVX2,
+    /// of eight (a short last group, idle lanes at zero approach), approaches from separated
+    /// to deep, tilts of both signs, and NaN.
     #[test]
     fn evaluate_lanes_is_evaluate_bit_for_bit() {
         for crown in [Crown::None, Crown::Logarithmic { scale: 1.0 }] {
@@ -355,36 +353,61 @@ mod tests {
                 }
                 approach[3] = f32::NAN;
                 tilt[16] = f32::NAN;
-                let mut many = [RollerLoad::default(); 17];
-                for ((out, a), t) in many
-                    .chunks_mut(LANES)
-                    .zip(approach.chunks(LANES))
-                    .zip(tilt.chunks(LANES))
+                // Four lanes, and eight where the build has them: each against one roller.
+                let mut widths = std::vec![[RollerLoad::default(); 17]];
+                lanes_in_groups::<crate::lanes::F32x4, 4, 10>(
+                    &roller,
+                    &approach,
+                    &tilt,
+                    &mut widths[0],
+                );
+                #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
                 {
-                    let lanes =
-                        |v: &[f32]| core::array::from_fn(|l| v.get(l).copied().unwrap_or(0.0));
-                    let loads = roller.evaluate_lanes(lanes(a), lanes(t));
-                    for (l, o) in out.iter_mut().enumerate() {
-                        *o = loads.lane(l);
+                    let mut eight = [RollerLoad::default(); 17];
+                    lanes_in_groups::<crate::lanes::F32x8, 8, 10>(
+                        &roller, &approach, &tilt, &mut eight,
+                    );
+                    widths.push(eight);
+                }
+                for many in &widths {
+                    for ((m, &a), &t) in many.iter().zip(&approach).zip(&tilt) {
+                        let one = roller.evaluate(a, t);
+                        let bits = |l: &RollerLoad| {
+                            [
+                                l.load_n,
+                                l.moment_nm,
+                                l.stiffness_n_per_m,
+                                l.stiffness_moment_n,
+                                l.stiffness_tilt_nm,
+                                l.stiffness_derivative_n_per_m2,
+                            ]
+                            .map(f32::to_bits)
+                        };
+                        assert_eq!(bits(m), bits(&one), "δ = {a}, ψ = {t}");
+                        assert!(m.load_n.is_finite());
                     }
+                    assert!(many.iter().any(|m| m.load_n > 0.0));
                 }
-                for ((m, &a), &t) in many.iter().zip(&approach).zip(&tilt) {
-                    let one = roller.evaluate(a, t);
-                    let bits = |l: &RollerLoad| {
-                        [
-                            l.load_n,
-                            l.moment_nm,
-                            l.stiffness_n_per_m,
-                            l.stiffness_moment_n,
-                            l.stiffness_tilt_nm,
-                            l.stiffness_derivative_n_per_m2,
-                        ]
-                        .map(f32::to_bits)
-                    };
-                    assert_eq!(bits(m), bits(&one), "δ = {a}, ψ = {t}");
-                    assert!(m.load_n.is_finite());
-                }
-                assert!(many.iter().any(|m| m.load_n > 0.0));
+            }
+        }
+    }
+
+    /// `out[j]` = the lanes' load of roller j, `L` rollers at a time in the lanes of `T`.
+    fn lanes_in_groups<T: Real<PerLane<f32> = [f32; L]>, const L: usize, const S: usize>(
+        roller: &SlicedRoller<S>,
+        approach: &[f32],
+        tilt: &[f32],
+        out: &mut [RollerLoad],
+    ) {
+        for ((out, a), t) in out
+            .chunks_mut(L)
+            .zip(approach.chunks(L))
+            .zip(tilt.chunks(L))
+        {
+            let lanes = |v: &[f32]| core::array::from_fn(|l| v.get(l).copied().unwrap_or(0.0));
+            let loads = roller.evaluate_lanes::<T, L>(lanes(a), lanes(t));
+            for (l, o) in out.iter_mut().enumerate() {
+                *o = loads.lane(l);
             }
         }
     }

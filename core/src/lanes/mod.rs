@@ -1,15 +1,17 @@
-//! Four f32 lanes side by side, and the arithmetic the step's lockstep stages share with the
-//! one-number code.
+//! Four or eight f32 lanes side by side, and the arithmetic the step's lockstep stages share
+//! with the one-number code.
 //!
 //! Some stages of a step are the same chain of dependent operations for every roller (the
 //! film–load Newton iterations: two exponentials, two roots, three divisions each). A
 //! superscalar host cannot overlap enough of those chains across rollers to hide their
-//! latency, but it can run four of them in the lanes of one SIMD register. [`Real`] is what
-//! such a stage is written against: `f32` (one roller; the Cortex-M4 path) and [`F32x4`] (four
-//! rollers; SSE on x86-64, a plain lane loop elsewhere) implement it with the same IEEE
-//! operations — `+ − × ÷`, square root, compare-and-select, and integer arithmetic on the bit
-//! pattern — so a lane's result is the one-roller result bit for bit (no fused or approximate
-//! instructions; the tests compare every operation).
+//! latency, but it can run four or eight of them in the lanes of one SIMD register. [`Real`] is
+//! what such a stage is written against: `f32` (one roller; the Cortex-M4 path), [`F32x4`]
+//! (four rollers; SSE on x86-64, a plain lane loop elsewhere) and, in builds with AVX2,
+//! `F32x8` (eight rollers in a 256-bit register) implement it with the same IEEE operations —
+//! `+ − × ÷`, square root, compare-and-select, and integer arithmetic on the bit pattern — so
+//! a lane's result is the one-roller result bit for bit (no fused or approximate instructions;
+//! the tests compare every operation). [`Wide`] is the widest of them the build has: the
+//! host's lane type.
 
 use core::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
 
@@ -23,6 +25,8 @@ pub(crate) trait Real:
     + Div<Output = Self>
     + Neg<Output = Self>
 {
+    /// Lanes (rollers) side by side: 1 for one number.
+    const LANES: usize;
     /// One truth value per lane.
     type Mask: Copy + BitAnd<Output = Self::Mask>;
     /// One `U` per lane.
@@ -67,8 +71,10 @@ pub(crate) trait Real:
     ) -> Self;
     /// Lane `i` (0 beyond the lanes).
     fn lane(self, i: usize) -> f32;
+    /// The lanes as per-lane items, to be read lane by lane with [`Real::item`] (one store of
+    /// the register, where [`Real::lane`] of each lane would store it once per lane).
+    fn to_per_lane(self) -> Self::PerLane<f32>;
     /// Item `i` of per-lane items (the default beyond the lanes).
-    #[cfg(test)]
     fn item<U: Copy + Default + core::fmt::Debug>(items: &Self::PerLane<U>, i: usize) -> U;
     /// Per-lane items `f(i)` of lanes `i` = 0, 1, ….
     fn build<U: Copy + Default + core::fmt::Debug>(f: impl FnMut(usize) -> U) -> Self::PerLane<U>;
@@ -79,6 +85,7 @@ pub(crate) trait Real:
 }
 
 impl Real for f32 {
+    const LANES: usize = 1;
     type Mask = bool;
     type PerLane<U: Copy + Default + core::fmt::Debug> = U;
     #[inline(always)]
@@ -161,7 +168,10 @@ impl Real for f32 {
             0.0
         }
     }
-    #[cfg(test)]
+    #[inline(always)]
+    fn to_per_lane(self) -> f32 {
+        self
+    }
     #[inline(always)]
     fn item<U: Copy + Default + core::fmt::Debug>(items: &U, i: usize) -> U {
         if i == 0 {
@@ -182,107 +192,152 @@ impl Real for f32 {
 
 pub(crate) use simd::{F32x4, Mask4};
 
-/// Each backend (`simd`) gives the per-lane primitives; what handles the lanes as an array is
-/// the same for both and lives here once.
-impl Real for F32x4 {
-    type Mask = Mask4;
-    type PerLane<U: Copy + Default + core::fmt::Debug> = [U; 4];
-    #[inline(always)]
-    fn splat(v: f32) -> Self {
-        simd::splat(v)
-    }
-    #[inline(always)]
-    fn gt(self, other: Self) -> Mask4 {
-        simd::gt(self, other)
-    }
-    #[inline(always)]
-    fn ge(self, other: Self) -> Mask4 {
-        simd::ge(self, other)
-    }
-    #[inline(always)]
-    fn le(self, other: Self) -> Mask4 {
-        simd::le(self, other)
-    }
-    #[inline(always)]
-    fn lt(self, other: Self) -> Mask4 {
-        simd::lt(self, other)
-    }
-    #[inline(always)]
-    fn eq(self, other: Self) -> Mask4 {
-        simd::eq(self, other)
-    }
-    #[inline(always)]
-    fn indicator(mask: Mask4) -> Self {
-        simd::indicator(mask)
-    }
-    #[inline(always)]
-    fn truncate_index(self) -> ([usize; 4], Self) {
-        simd::truncate_index(self)
-    }
-    #[inline(always)]
-    fn select(mask: Mask4, a: Self, b: Self) -> Self {
-        simd::select(mask, a, b)
-    }
-    #[inline(always)]
-    fn choose(mask: Mask4, a: Self, b: Self) -> Self {
-        simd::select(mask, a, b)
-    }
-    #[inline(always)]
-    fn max(self, other: Self) -> Self {
-        simd::max(self, other)
-    }
-    #[inline(always)]
-    fn min(self, other: Self) -> Self {
-        simd::min(self, other)
-    }
-    #[inline(always)]
-    fn sqrt_non_negative(self) -> Self {
-        simd::sqrt_non_negative(self)
-    }
-    #[inline(always)]
-    fn split_normal(self) -> (Self, Self) {
-        simd::split_normal(self)
-    }
-    #[inline(always)]
-    fn round_with_pow2(self) -> (Self, Self) {
-        simd::round_with_pow2(self)
-    }
-    #[inline(always)]
-    fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
-        items: &[U; 4],
-        mut f: impl FnMut(&U) -> f32,
-    ) -> Self {
-        // Spelled out, here and below: `array::map` and `array::from_fn` go through closures
-        // that a build in several codegen units (the workspace's release profile) may leave
-        // as calls, passing the lanes through memory (+0.7 µs on the host step).
-        let [a, b, c, d] = items;
-        Self::from_array([f(a), f(b), f(c), f(d)])
-    }
-    #[inline(always)]
-    fn lane(self, i: usize) -> f32 {
-        self.to_array().get(i).copied().unwrap_or(0.0)
-    }
-    #[cfg(test)]
-    #[inline(always)]
-    fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; 4], i: usize) -> U {
-        items.get(i).copied().unwrap_or_default()
-    }
-    #[inline(always)]
-    fn build<U: Copy + Default + core::fmt::Debug>(f: impl FnMut(usize) -> U) -> [U; 4] {
-        let mut f = f;
-        let a = f(0);
-        let b = f(1);
-        let c = f(2);
-        [a, b, c, f(3)]
-    }
-    #[inline(always)]
-    fn gather<U>(items: &[U], f: impl Fn(&U) -> f32) -> Self {
-        let lane = |i: usize| items.get(i).or(items.last()).map_or(0.0, &f);
-        Self::from_array([lane(0), lane(1), lane(2), lane(3)])
-    }
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+pub(crate) use avx::{F32x8, Mask8};
+
+/// The host's lane type for the lockstep stages: the widest register the build may use —
+/// eight lanes (`F32x8`) where AVX2 is enabled (the workspace's `.cargo/config.toml` enables
+/// it for x86-64 Linux hosts), else four ([`F32x4`]: SSE on any x86-64, an array elsewhere).
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+pub(crate) type Wide = F32x8;
+/// The host's lane type for the lockstep stages (four lanes: this build has no AVX2).
+#[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+pub(crate) type Wide = F32x4;
+
+/// Rollers in the lanes of one [`Wide`] register.
+pub(crate) const WIDE_LANES: usize = <Wide as Real>::LANES;
+
+/// `Real` for a lane type whose backend module `$simd` gives the per-lane primitives; what
+/// handles the lanes as an array is the same for every width and is written here once, with
+/// the lanes spelled out (`$v` bound to lane `$i`).
+macro_rules! real_lanes {
+    ($lanes:ty, $mask:ty, $simd:ident, $n:literal, [$($v:ident = $i:literal),+]) => {
+        impl Real for $lanes {
+            const LANES: usize = $n;
+            type Mask = $mask;
+            type PerLane<U: Copy + Default + core::fmt::Debug> = [U; $n];
+            #[inline(always)]
+            fn splat(v: f32) -> Self {
+                $simd::splat(v)
+            }
+            #[inline(always)]
+            fn gt(self, other: Self) -> $mask {
+                $simd::gt(self, other)
+            }
+            #[inline(always)]
+            fn ge(self, other: Self) -> $mask {
+                $simd::ge(self, other)
+            }
+            #[inline(always)]
+            fn le(self, other: Self) -> $mask {
+                $simd::le(self, other)
+            }
+            #[inline(always)]
+            fn lt(self, other: Self) -> $mask {
+                $simd::lt(self, other)
+            }
+            #[inline(always)]
+            fn eq(self, other: Self) -> $mask {
+                $simd::eq(self, other)
+            }
+            #[inline(always)]
+            fn indicator(mask: $mask) -> Self {
+                $simd::indicator(mask)
+            }
+            #[inline(always)]
+            fn truncate_index(self) -> ([usize; $n], Self) {
+                $simd::truncate_index(self)
+            }
+            #[inline(always)]
+            fn select(mask: $mask, a: Self, b: Self) -> Self {
+                $simd::select(mask, a, b)
+            }
+            #[inline(always)]
+            fn choose(mask: $mask, a: Self, b: Self) -> Self {
+                $simd::select(mask, a, b)
+            }
+            #[inline(always)]
+            fn max(self, other: Self) -> Self {
+                $simd::max(self, other)
+            }
+            #[inline(always)]
+            fn min(self, other: Self) -> Self {
+                $simd::min(self, other)
+            }
+            #[inline(always)]
+            fn sqrt_non_negative(self) -> Self {
+                $simd::sqrt_non_negative(self)
+            }
+            #[inline(always)]
+            fn split_normal(self) -> (Self, Self) {
+                $simd::split_normal(self)
+            }
+            #[inline(always)]
+            fn round_with_pow2(self) -> (Self, Self) {
+                $simd::round_with_pow2(self)
+            }
+            #[inline(always)]
+            fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
+                items: &[U; $n],
+                mut f: impl FnMut(&U) -> f32,
+            ) -> Self {
+                // Spelled out, here and below: `array::map` and `array::from_fn` go through
+                // closures that a build in several codegen units (the workspace's release
+                // profile) may leave as calls, passing the lanes through memory (+0.7 µs on
+                // the host step).
+                let [$($v),+] = items;
+                Self::from_array([$(f($v)),+])
+            }
+            #[inline(always)]
+            fn lane(self, i: usize) -> f32 {
+                self.to_array().get(i).copied().unwrap_or(0.0)
+            }
+            #[inline(always)]
+            fn to_per_lane(self) -> [f32; $n] {
+                self.to_array()
+            }
+            #[inline(always)]
+            fn item<U: Copy + Default + core::fmt::Debug>(items: &[U; $n], i: usize) -> U {
+                items.get(i).copied().unwrap_or_default()
+            }
+            #[inline(always)]
+            fn build<U: Copy + Default + core::fmt::Debug>(
+                f: impl FnMut(usize) -> U,
+            ) -> [U; $n] {
+                let mut f = f;
+                $(let $v = f($i);)+
+                [$($v),+]
+            }
+            #[inline(always)]
+            fn gather<U>(items: &[U], f: impl Fn(&U) -> f32) -> Self {
+                let lane = |i: usize| items.get(i).or(items.last()).map_or(0.0, &f);
+                Self::from_array([$(lane($i)),+])
+            }
+        }
+    };
 }
 
-/// SSE (baseline on every x86-64): one instruction per operation and lane group.
+real_lanes!(F32x4, Mask4, simd, 4, [l0 = 0, l1 = 1, l2 = 2, l3 = 3]);
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+real_lanes!(
+    F32x8,
+    Mask8,
+    avx,
+    8,
+    [
+        l0 = 0,
+        l1 = 1,
+        l2 = 2,
+        l3 = 3,
+        l4 = 4,
+        l5 = 5,
+        l6 = 6,
+        l7 = 7
+    ]
+);
+
+/// SSE (baseline on every x86-64): one instruction per operation and lane group. (Builds with
+/// AVX2 use them for a last group of four rollers or fewer.)
 #[cfg(target_arch = "x86_64")]
 #[path = "sse.rs"]
 mod simd;
@@ -291,6 +346,10 @@ mod simd;
 #[cfg(not(target_arch = "x86_64"))]
 #[path = "portable.rs"]
 mod simd;
+
+/// AVX2 where the build enables it: eight lanes, one instruction per operation and lane group.
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+mod avx;
 
 #[cfg(test)]
 mod tests;
