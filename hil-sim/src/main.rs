@@ -29,6 +29,10 @@ enum Command {
 }
 
 fn main() -> std::process::ExitCode {
+    if let Err(e) = bearing_host::cpu::check() {
+        eprintln!("error: {e}");
+        return std::process::ExitCode::from(1);
+    }
     let cli = Cli::parse();
     let result: anyhow::Result<std::process::ExitCode> = match cli.command {
         Command::Trace(command) => {

@@ -4,6 +4,7 @@
 
 pub mod ann;
 pub mod config;
+pub mod cpu;
 pub mod dataset;
 pub mod ehl;
 pub mod plot_style;

@@ -37,6 +37,10 @@ enum Command {
 }
 
 fn main() -> std::process::ExitCode {
+    if let Err(e) = bearing_host::cpu::check() {
+        eprintln!("error: {e}");
+        return std::process::ExitCode::from(1);
+    }
     let cli = Cli::parse();
     let result: anyhow::Result<()> = match cli.command {
         Command::Film(args) => cli::film::run(args),
