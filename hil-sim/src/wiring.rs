@@ -98,15 +98,22 @@ pub struct Product {
     pub reference: Option<Box<dyn AccuracyReference>>,
 }
 
+/// The trace's bearing stepped with `film`, primed at the trace's first sample.
+pub fn primed_stepper(
+    meta: &TraceMeta,
+    film: FilmKind,
+    first: &Sample,
+) -> Result<KernelStepper, String> {
+    let mut stepper = KernelStepper::new(meta, film)?;
+    stepper.prime(first);
+    Ok(stepper)
+}
+
 /// Builds the product's models for the trace, primed at its first sample.
 pub fn product(meta: &TraceMeta, film: FilmChoice, first: &Sample) -> Result<Product, String> {
-    let mut stepper = KernelStepper::new(meta, film.kind())?;
-    stepper.prime(first);
-    let mut dry = KernelStepper::new(meta, FilmKind::Dry)?;
-    dry.prime(first);
     Ok(Product {
-        stepper: Box::new(stepper),
-        dry: Some(Box::new(dry)),
+        stepper: Box::new(primed_stepper(meta, film.kind(), first)?),
+        dry: Some(Box::new(primed_stepper(meta, FilmKind::Dry, first)?)),
         reference: Some(Box::new(crate::reference::NumericalReference::new(meta)?)),
     })
 }

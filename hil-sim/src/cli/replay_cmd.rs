@@ -103,8 +103,10 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
         .first()
         .ok_or_else(|| anyhow!("the trace has no samples"))?;
     let mut product = wiring::product(&trace.meta, args.film, first).map_err(|e| anyhow!(e))?;
-    // A second, identical stepper that warms the caches before the timed loop (engine doc).
-    let mut warm_up = wiring::product(&trace.meta, args.film, first).map_err(|e| anyhow!(e))?;
+    // A second, identical stepper that warms the caches before the timed loop (engine doc);
+    // it needs neither the dry model nor the reference.
+    let mut warm_up =
+        wiring::primed_stepper(&trace.meta, args.film.kind(), first).map_err(|e| anyhow!(e))?;
     let realtime = match args.realtime {
         RealtimeMode::Off => None,
         RealtimeMode::Auto | RealtimeMode::On => {
@@ -159,7 +161,7 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
                 .dry
                 .as_mut()
                 .map(|d| d.as_mut() as &mut dyn bearing_hil::replay::BearingStepper),
-            warm_up: Some(warm_up.stepper.as_mut()),
+            warm_up: Some(&mut warm_up),
         },
         &config,
         Some(&bar),
