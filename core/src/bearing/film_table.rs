@@ -164,7 +164,7 @@ impl<T: Real> FilmSums<T> {
 /// Where λ falls in the table: the cell's first node and the fraction across it, held to the
 /// table at both ends (the film is continued flat beyond them: below 1 N Martin's film rules,
 /// above 144 kN no roller goes). Of one roller, or of the rollers in the lanes of `T`: the
-/// host computes the cells of four rollers in SIMD lanes and looks up only the nodes lane by
+/// host computes the cells of four or eight rollers in SIMD lanes and looks up only the nodes lane by
 /// lane.
 #[derive(Clone, Copy, Debug)]
 struct Cell<T: Real = f32> {

@@ -161,7 +161,7 @@ impl RollerMemory {
 /// Whole-roller power law Q = L·(δ − δ_off)^n summarising the slices near one approach, kept
 /// as the approach it passes through: Q = Q_ref·((δ − δ_off)/s)^n, so that the elastic
 /// approach at λ = ln Q is s·e^((λ − λ_ref)/n) — one exponential, and no logarithm beyond the
-/// fit's ln Q_ref. Of one roller, or of the rollers in the lanes of `T` (the host fits four
+/// fit's ln Q_ref. Of one roller, or of the rollers in the lanes of `T` (the host fits four or eight
 /// at once).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct PowerLaw<T: Real = f32> {
@@ -285,7 +285,7 @@ pub(crate) fn prepare_roller<const S: usize>(
 }
 
 /// [`prepare_roller`] after its slice pass: the slices' load `r1` at `approach1` (m), of one
-/// roller or of the rollers in the lanes of `T` (the host prepares four at once).
+/// roller or of the rollers in the lanes of `T` (the host prepares four or eight at once).
 #[inline(always)]
 pub(crate) fn prepare_sliced<T: Real>(
     r1: RollerLoads<T>,
@@ -400,7 +400,7 @@ pub(crate) fn finish_roller(
 }
 
 /// [`finish_roller`] but the regimes, of one roller or of the rollers in the lanes of `T`
-/// (the host finishes four at once), with their memories `memory` (updated).
+/// (the host finishes four or eight at once), with their memories `memory` (updated).
 #[inline(always)]
 pub(crate) fn finish_lanes<T: Real>(
     prepared: &Prepared<T>,

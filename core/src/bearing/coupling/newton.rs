@@ -36,7 +36,7 @@ pub(super) struct Solved<T: Real> {
 ///
 /// The iteration state of the rollers in the lanes of `T`: `Newton<f32>` is one roller's
 /// (the Cortex-M4 iterates one roller at a time: lanes gain nothing in order). A host builds
-/// the states of four rollers at a time as `Newton<F32x4>`, straight from their power laws in
+/// the states of four or eight rollers at a time (`Newton<F32x4>`, `Newton<F32x8>`), straight from their power laws in
 /// lanes (`prepare_sliced`, `super::lockstep`), and iterates them as SIMD lanes. Each lane
 /// runs the operations of one roller in the same order
 /// (`crate::lanes`), so the results are the same bit for bit. (An iteration is a chain of
@@ -116,7 +116,7 @@ impl<T: Real> Newton<T> {
     /// here, not gathered).
     #[cfg(test)]
     #[inline(always)]
-    pub(crate) fn start_lanes(rollers: &T::PerLane<Newton>) -> Self {
+    fn start_lanes(rollers: &T::PerLane<Newton>) -> Self {
         let field = |f: fn(&Newton) -> f32| T::from_per_lane(rollers, f);
         let lam = field(|n| n.lam);
         Self {
@@ -136,7 +136,7 @@ impl<T: Real> Newton<T> {
     /// state of its roller; the law's constants there are the lane's already.
     #[cfg(test)]
     #[inline(always)]
-    pub(crate) fn store_lane(&self, i: usize, roller: &mut Newton) {
+    fn store_lane(&self, i: usize, roller: &mut Newton) {
         roller.lo = self.lo.lane(i);
         roller.hi = self.hi.lane(i);
         roller.lam = self.lam.lane(i);
