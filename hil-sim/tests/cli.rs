@@ -117,14 +117,24 @@ fn out_of_range_flags_are_named() {
         assert!(err.contains(flag) && err.contains("allowed"), "{err}");
     }
     // A real-time request no machine can grant is the user's error under the default
-    // `--realtime auto` too (only the system's refusal of a valid request falls back).
+    // `--realtime auto` and `off` too (only the system's refusal of a valid request falls back).
     for (flag, value, says) in [
         ("--rt-cpu", "4096", "--rt-cpu 4096 does not exist"),
         ("--rt-priority", "100", "--rt-priority 100 is outside"),
     ] {
-        let out = hil_sim(&["replay", "--trace", bin.to_str().unwrap(), flag, value]);
-        assert_eq!(out.status.code(), Some(1));
-        assert!(stderr(&out).contains(says), "{}", stderr(&out));
+        for mode in ["auto", "off"] {
+            let out = hil_sim(&[
+                "replay",
+                "--trace",
+                bin.to_str().unwrap(),
+                "--realtime",
+                mode,
+                flag,
+                value,
+            ]);
+            assert_eq!(out.status.code(), Some(1), "--realtime {mode}");
+            assert!(stderr(&out).contains(says), "{}", stderr(&out));
+        }
     }
     let out = hil_sim(&[
         "trace",

@@ -107,17 +107,17 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
     // it needs neither the dry model nor the reference.
     let mut warm_up =
         wiring::primed_stepper(&trace.meta, args.film.kind(), first).map_err(|e| anyhow!(e))?;
+    // The request is checked in every mode, `off` included: a CPU or priority no machine can
+    // grant is a mistake on the command line whatever the policy asked for.
+    let default = Realtime::default_for_this_machine();
+    let request = Realtime {
+        cpu: args.rt_cpu.unwrap_or(default.cpu),
+        priority: args.rt_priority,
+    };
+    request.check().map_err(|e| anyhow!(e))?;
     let realtime = match args.realtime {
         RealtimeMode::Off => None,
-        RealtimeMode::Auto | RealtimeMode::On => {
-            let default = Realtime::default_for_this_machine();
-            let request = Realtime {
-                cpu: args.rt_cpu.unwrap_or(default.cpu),
-                priority: args.rt_priority,
-            };
-            request.check().map_err(|e| anyhow!(e))?;
-            Some(request)
-        }
+        RealtimeMode::Auto | RealtimeMode::On => Some(request),
     };
     let config = ReplayConfig {
         rate_hz,
