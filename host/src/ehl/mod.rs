@@ -35,6 +35,7 @@
 //! limit, Moes' formula (Barus) and Pan–Hamrock's formulas (Roelands + DH).
 
 pub mod case;
+pub mod compare;
 pub mod convergence;
 pub mod driver;
 pub mod formulas;
