@@ -3,7 +3,8 @@
 //! `bearing ehl solve` solves one case given either in SI (`--load N --length M --entrainment
 //! M_PER_S --radius M --modulus PA --alpha PER_PA --eta0 PA_S`, the flags of `bearing film`) or
 //! by dimensionless groups (`--w --u --g`, or Moes `--m --l`); `bearing ehl convergence` prints
-//! the N / 2N / 4N grid-refinement table with the Richardson extrapolation.
+//! the N / 2N / 4N grid-refinement table with the Richardson extrapolation; `bearing ehl
+//! compare` runs the formula comparisons ([`super::ehl_compare`]).
 
 use anyhow::{bail, Context, Result};
 use bearing_host::ehl::{self, convergence, ContactCase, EhlSolution, SolverOptions, ViscosityLaw};
@@ -22,6 +23,8 @@ enum EhlCommand {
     Solve(SolveArgs),
     /// Grid-refinement table (N, 2N, 4N and Richardson extrapolation) for one case.
     Convergence(ConvergenceArgs),
+    /// The solver against Moes' or Pan–Hamrock's formula over a grid of cases (docs/ehl.md).
+    Compare(super::ehl_compare::CompareArgs),
 }
 
 /// The case: SI flags, or W/U/G, or Moes M/L.
@@ -161,6 +164,7 @@ pub fn run(args: EhlArgs) -> Result<()> {
     match args.command {
         EhlCommand::Solve(a) => solve(a),
         EhlCommand::Convergence(a) => convergence_table(a),
+        EhlCommand::Compare(a) => super::ehl_compare::run(a),
     }
 }
 
@@ -338,6 +342,7 @@ mod tests {
         match Cli::try_parse_from(argv)?.command {
             EhlCommand::Solve(a) => a.case.case(),
             EhlCommand::Convergence(a) => a.case.case(),
+            EhlCommand::Compare(_) => unreachable!("parsed as `solve`"),
         }
     }
 

@@ -3,6 +3,7 @@
 pub mod common;
 pub mod dataset;
 pub mod ehl;
+pub mod ehl_compare;
 pub mod ehl_plot;
 pub mod export;
 pub mod film;
