@@ -96,6 +96,42 @@ impl Integrator {
         result
     }
 
+    /// Newton system of the bearing DOFs at `u` with bearing forces `forces` (per DOF) and the
+    /// reactions' stiffness and damping: the tangent I + (1−α) S (K_b + c1 C_b) (K_b, C_b
+    /// block-diagonal) and the update −R(u), R(u) = u − u_lin − (1−α) S F.
+    #[allow(clippy::type_complexity)]
+    fn newton_system(
+        &self,
+        forces: &[f64; 2 * MAX_BEARINGS],
+        u: &[f64; 2 * MAX_BEARINGS],
+        u_lin: &[f64; 2 * MAX_BEARINGS],
+        c1: f64,
+    ) -> (
+        [[f64; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS],
+        [f64; 2 * MAX_BEARINGS],
+    ) {
+        let alpha = self.alpha;
+        let m = 2 * self.bearing_dofs.len();
+        let mut tangent = [[0.0; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS];
+        let mut du = [0.0; 2 * MAX_BEARINGS];
+        for i in 0..m {
+            tangent[i][i] = 1.0;
+            let mut su = 0.0;
+            for (j, &f) in forces.iter().enumerate().take(m) {
+                let (b, c) = (j / 2, j % 2);
+                let r = &self.reactions[b];
+                let sij = self.s[(i, j)];
+                su += sij * f;
+                for k in 0..2 {
+                    let kb = r.stiffness[c][k] + c1 * r.damping[c][k];
+                    tangent[i][2 * b + k] += (1.0 - alpha) * sij * kb;
+                }
+            }
+            du[i] = -(u[i] - u_lin[i] - (1.0 - alpha) * su);
+        }
+        (tangent, du)
+    }
+
     fn step_untimed(&mut self, f1: &DVector<f64>) -> Result<(), StepError> {
         let (alpha, beta, gamma, h) = (self.alpha, self.beta, self.gamma, self.dt);
         let t1 = self.state.time + h;
@@ -134,27 +170,19 @@ impl Integrator {
         // bearing call, exact for a linear bearing — so the first evaluation of this step is
         // already close to the solution.
         let mut u = [0.0; 2 * MAX_BEARINGS];
-        let mut tangent = [[0.0; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS];
-        let mut du = [0.0; 2 * MAX_BEARINGS];
-        for i in 0..m {
-            tangent[i][i] = 1.0;
-            let mut su = 0.0;
-            for j in 0..m {
-                let (b, c) = (j / 2, j % 2);
-                let r = &self.reactions[b];
-                // Force at u_e with this step's velocity law u̇(u_e) = ṽ + c1 (u_e − ũ).
-                let mut f = r.force[c];
-                for k in 0..2 {
-                    let jk = 2 * b + k;
-                    let w_at = w_pred[jk] + c1 * (self.eval_u[jk] - u_pred[jk]);
-                    f -= r.damping[c][k] * (w_at - self.eval_w[jk]);
-                    tangent[i][jk] +=
-                        (1.0 - alpha) * self.s[(i, j)] * (r.stiffness[c][k] + c1 * r.damping[c][k]);
-                }
-                su += self.s[(i, j)] * f;
+        let mut f_at = [0.0; 2 * MAX_BEARINGS];
+        for (j, f) in f_at.iter_mut().enumerate().take(m) {
+            let (b, c) = (j / 2, j % 2);
+            let r = &self.reactions[b];
+            // Force at u_e with this step's velocity law u̇(u_e) = ṽ + c1 (u_e − ũ).
+            *f = r.force[c];
+            for k in 0..2 {
+                let jk = 2 * b + k;
+                let w_at = w_pred[jk] + c1 * (self.eval_u[jk] - u_pred[jk]);
+                *f -= r.damping[c][k] * (w_at - self.eval_w[jk]);
             }
-            du[i] = -(self.eval_u[i] - u_lin[i] - (1.0 - alpha) * su);
         }
+        let (mut tangent, mut du) = self.newton_system(&f_at, &self.eval_u, &u_lin, c1);
         let predicted = solve_small(&mut tangent, &mut du, m);
         for i in 0..m {
             u[i] = if predicted && du[i].is_finite() {
@@ -186,24 +214,11 @@ impl Integrator {
                 });
             }
             self.stats.iterations += 1;
-            // Residual R(u) and tangent I + (1−α) S (K_b + c1 C_b) (K_b, C_b block-diagonal).
-            let mut tangent = [[0.0; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS];
-            let mut du = [0.0; 2 * MAX_BEARINGS];
-            for i in 0..m {
-                tangent[i][i] = 1.0;
-                let mut su = 0.0;
-                for j in 0..m {
-                    let (b, c) = (j / 2, j % 2);
-                    let r = &self.reactions[b];
-                    let sij = self.s[(i, j)];
-                    su += sij * r.force[c];
-                    for k in 0..2 {
-                        let kb = r.stiffness[c][k] + c1 * r.damping[c][k];
-                        tangent[i][2 * b + k] += (1.0 - alpha) * sij * kb;
-                    }
-                }
-                du[i] = -(u[i] - u_lin[i] - (1.0 - alpha) * su);
+            let mut forces = [0.0; 2 * MAX_BEARINGS];
+            for (j, f) in forces.iter_mut().enumerate().take(m) {
+                *f = self.reactions[j / 2].force[j % 2];
             }
+            let (mut tangent, mut du) = self.newton_system(&forces, &u, &u_lin, c1);
             if !solve_small(&mut tangent, &mut du, m) {
                 return Err(StepError::SingularTangent { time: t1 });
             }
