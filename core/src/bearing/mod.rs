@@ -21,6 +21,7 @@ pub use output::{BearingOutput, RollerOutput, StepStatus};
 use crate::contact::{ContactLaw, SlicedRoller};
 use crate::error::{in_range, Allowed, ParamError};
 use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis, ServedLoads};
+use crate::lanes::{Wide, WIDE_LANES};
 use crate::math::{ln, select, sin_cos};
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
 use core::f32::consts::PI;
@@ -431,13 +432,38 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             pitch: &self.pitch,
         };
         let places = parts.places(state);
+        // The host runs the slice pass of eight rollers at a time in SIMD lanes (four without
+        // AVX2), as the lubricated step does; the M4 one roller after another. Same operations,
+        // same results bit for bit (`slicing`'s lane test).
+        let mut loads = [crate::contact::RollerLoad::default(); Z];
+        if LOCKSTEP {
+            for (group, group_places) in loads.chunks_mut(WIDE_LANES).zip(places.chunks(WIDE_LANES))
+            {
+                let mut approach = [0.0; WIDE_LANES];
+                let mut tilt = [0.0; WIDE_LANES];
+                for ((a, t), place) in approach.iter_mut().zip(tilt.iter_mut()).zip(group_places) {
+                    *a = place.geometric_m;
+                    *t = place.tilt_rad;
+                }
+                let group_loads = self
+                    .roller
+                    .evaluate_lanes::<Wide, { WIDE_LANES }>(approach, tilt);
+                for (i, load) in group.iter_mut().enumerate() {
+                    *load = group_loads.lane(i);
+                }
+            }
+        }
         parts.assemble(
             &mut self.memory,
             &mut self.output,
             state,
             &places,
-            |roller, _, _, geometric, tilt| {
-                let load = roller.evaluate(geometric, tilt);
+            |roller, _, j, geometric, tilt| {
+                let load = if LOCKSTEP {
+                    loads.get(j).copied().unwrap_or_default()
+                } else {
+                    roller.evaluate(geometric, tilt)
+                };
                 let roller = RollerOutput {
                     approach_m: geometric,
                     roller_stiffness_n_per_m: load.stiffness_n_per_m,

@@ -413,6 +413,40 @@ fn dry_bearing_matches_the_slicing_law_roller_by_roller() {
     }
 }
 
+/// The host's dry step evaluates the rollers in SIMD lane groups (eight, eight and one of 17;
+/// four at a time without AVX2); every roller's load, moment and stiffness must be the
+/// one-roller slice pass at its approach bit for bit, crowned rollers from separated to loaded.
+#[test]
+fn dry_bearing_lanes_are_the_one_roller_pass_bit_for_bit() {
+    let p = hub_params(-2e-6, Crown::Logarithmic { scale: 1.0 });
+    let mut b = Bearing::<17, 10>::new(p).unwrap();
+    let roller =
+        SlicedRoller::<10>::new(p.geometry(), p.reduced_modulus_pa(), ContactLaw::Palmgren);
+    let (mut loaded, mut separated) = (0, 0);
+    for (x, y) in [(9e-6, 0.0), (-3e-6, 7e-6), (2e-5, -1e-5)] {
+        let out = *b.step_dry(&state(x, y, 0.0));
+        for r in out.rollers.iter() {
+            let one = roller.evaluate(r.geometric_approach_m, 0.0);
+            assert_eq!(r.load_n.to_bits(), one.load_n.to_bits(), "{r:?}");
+            assert_eq!(r.moment_nm.to_bits(), one.moment_nm.to_bits(), "{r:?}");
+            assert_eq!(
+                r.contact_stiffness_n_per_m.to_bits(),
+                one.stiffness_n_per_m.to_bits(),
+                "{r:?}"
+            );
+            if one.load_n > 1.0 {
+                loaded += 1;
+            } else {
+                separated += 1;
+            }
+        }
+    }
+    assert!(
+        loaded > 5 && separated > 5,
+        "{loaded} loaded, {separated} separated"
+    );
+}
+
 #[test]
 fn roller_count_must_match_the_const_generic() {
     let e = Bearing::<12, 10>::new(hub_params(0.0, Crown::None)).unwrap_err();
