@@ -25,7 +25,7 @@ pub enum Formula {
 }
 
 impl Formula {
-    /// The agreement bound on |solver/formula − 1|.
+    /// The agreement bound: a ratio agrees when |solver/formula − 1| is below it.
     pub fn bound(self) -> f64 {
         match self {
             Formula::Moes => 0.05,
@@ -100,13 +100,13 @@ pub struct RefinedCheck {
 impl Comparison {
     /// The central film is within the bound.
     pub fn central_within(&self, formula: Formula) -> bool {
-        (self.central_ratio - 1.0).abs() <= formula.bound()
+        (self.central_ratio - 1.0).abs() < formula.bound()
     }
 
     /// The minimum film is within the bound (always, for a formula without one).
     pub fn min_within(&self, formula: Formula) -> bool {
         self.min_ratio
-            .is_none_or(|r| (r - 1.0).abs() <= formula.bound())
+            .is_none_or(|r| (r - 1.0).abs() < formula.bound())
     }
 }
 
