@@ -7,12 +7,13 @@ use nalgebra::{DMatrix, DVector};
 use super::{Integrator, StepError, StepStats, MAX_BEARINGS};
 use crate::shaft::bearing::BearingState;
 
+/// A vector over the bearing DOFs (x, y of each bearing; the first 2·bearings entries used).
+type BearingVector = [f64; 2 * MAX_BEARINGS];
+/// A matrix over the bearing DOFs, row-major.
+type BearingMatrix = [BearingVector; 2 * MAX_BEARINGS];
+
 /// Solves the small dense system a·x = b in place (partial pivoting); false when singular.
-fn solve_small(
-    a: &mut [[f64; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS],
-    b: &mut [f64],
-    n: usize,
-) -> bool {
+fn solve_small(a: &mut BearingMatrix, b: &mut [f64], n: usize) -> bool {
     for col in 0..n {
         let pivot = (col..n)
             .max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))
@@ -99,17 +100,13 @@ impl Integrator {
     /// Newton system of the bearing DOFs at `u` with bearing forces `forces` (per DOF) and the
     /// reactions' stiffness and damping: the tangent I + (1−α) S (K_b + c1 C_b) (K_b, C_b
     /// block-diagonal) and the update −R(u), R(u) = u − u_lin − (1−α) S F.
-    #[allow(clippy::type_complexity)]
     fn newton_system(
         &self,
-        forces: &[f64; 2 * MAX_BEARINGS],
-        u: &[f64; 2 * MAX_BEARINGS],
-        u_lin: &[f64; 2 * MAX_BEARINGS],
+        forces: &BearingVector,
+        u: &BearingVector,
+        u_lin: &BearingVector,
         c1: f64,
-    ) -> (
-        [[f64; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS],
-        [f64; 2 * MAX_BEARINGS],
-    ) {
+    ) -> (BearingMatrix, BearingVector) {
         let alpha = self.alpha;
         let m = 2 * self.bearing_dofs.len();
         let mut tangent = [[0.0; 2 * MAX_BEARINGS]; 2 * MAX_BEARINGS];
