@@ -56,19 +56,23 @@ static PRODUCER: Mutex<RefCell<Option<Producer<'static, Sample, QUEUE_SLOTS>>>> 
 /// Samples the interrupt could not queue (the main loop fell behind).
 static DROPPED: AtomicU32 = AtomicU32::new(0);
 
-/// The sampling interrupt. A real firmware reads its displacement probes (ADC, SPI) here; this
-/// one computes the whirl at the sample's time t = n/rate: ωt = 2π·(n mod turn)/turn.
+/// The shaft's kinematics at sample `n`, t = n/rate: ωt = 2π·(n mod turn)/turn.
+fn whirl(n: u32) -> Sample {
+    let phase = (n % SAMPLES_PER_TURN) as f32 * (TAU / SAMPLES_PER_TURN as f32);
+    let (sin, cos) = sin_cos(phase);
+    let (e, w) = (WHIRL_RADIUS_M, SHAFT_SPEED_RAD_S);
+    Sample {
+        displacement_m: [e * cos, e * sin],
+        velocity_m_s: [-e * w * sin, e * w * cos],
+    }
+}
+
+/// The sampling interrupt. A real firmware reads its displacement probes (ADC, SPI) here.
 #[exception]
 fn SysTick() {
     static mut INDEX: u32 = 0;
     *INDEX = (*INDEX + 1) % SAMPLES_PER_TURN;
-    let phase = *INDEX as f32 * (TAU / SAMPLES_PER_TURN as f32);
-    let (sin, cos) = sin_cos(phase);
-    let (e, w) = (WHIRL_RADIUS_M, SHAFT_SPEED_RAD_S);
-    let sample = Sample {
-        displacement_m: [e * cos, e * sin],
-        velocity_m_s: [-e * w * sin, e * w * cos],
-    };
+    let sample = whirl(*INDEX);
     interrupt::free(|cs| {
         let mut producer = PRODUCER.borrow(cs).borrow_mut();
         if !matches!(producer.as_mut().map(|p| p.enqueue(sample)), Some(Ok(()))) {
@@ -87,37 +91,38 @@ struct HubMotor {
     cage_angle_rad: f32,
     /// Cage advance per sample (rad).
     cage_step_rad: f32,
-    settled: bool,
 }
 
 impl HubMotor {
-    fn new() -> Option<Self> {
+    /// The bearing, its warm start converged at `first` (`settle`, before the real-time loop:
+    /// it renews the whole film table) so that every later step costs the same.
+    fn new(first: &Sample) -> Option<Self> {
         let crown = Crown::Logarithmic { scale: 1.0 };
         let geometry = BearingGeometry::new(0.060, 0.0088, 0.015, 17, crown, -2.0e-6).ok()?;
         let oil = Lubricant::new(0.08, 2.1e-8, 833.8).ok()?;
         let (steel, law) = (Material::STEEL, ContactLaw::Palmgren);
         let params = BearingParams::new(geometry, steel, steel, oil, law, 1.0e-5).ok()?;
         let cage_step_rad = geometry.cage_speed_rad_s(SHAFT_SPEED_RAD_S) * SAMPLE_PERIOD_S;
-        let (bearing, cage_angle_rad, settled) = (Bearing::new(params).ok()?, 0.0, false);
-        Some(Self {
-            bearing,
-            cage_angle_rad,
+        let mut hub_motor = Self {
+            bearing: Bearing::new(params).ok()?,
+            cage_angle_rad: 0.0,
             cage_step_rad,
-            settled,
-        })
+        };
+        let state = hub_motor.state(first)?;
+        hub_motor.bearing.settle(&AnnInt, &state, SETTLE_STEPS);
+        Some(hub_motor)
+    }
+
+    /// The operating state at `sample` and the current cage angle.
+    fn state(&self, sample: &Sample) -> Option<OperatingState> {
+        let (x, v, tilt) = (sample.displacement_m, sample.velocity_m_s, [0.0; 2]);
+        OperatingState::new(x, v, tilt, SHAFT_SPEED_RAD_S, self.cage_angle_rad).ok()
     }
 
     /// One film-coupled step (integer film network) at `sample`: force (N) and radial
-    /// stiffness (N/m), `None` if the core refused the state. The first converges the warm
-    /// start (`settle`); every later one costs the same.
+    /// stiffness (N/m), `None` if the core refused the state.
     fn step(&mut self, sample: &Sample) -> Option<([f32; 2], [[f32; 2]; 2])> {
-        let (x, v, tilt) = (sample.displacement_m, sample.velocity_m_s, [0.0; 2]);
-        let state = OperatingState::new(x, v, tilt, SHAFT_SPEED_RAD_S, self.cage_angle_rad).ok()?;
-        let out = match self.settled {
-            true => self.bearing.step(&AnnInt, &state),
-            false => self.bearing.settle(&AnnInt, &state, SETTLE_STEPS),
-        };
-        self.settled = true;
+        let out = self.bearing.step(&AnnInt, &self.state(sample)?);
         self.cage_angle_rad += self.cage_step_rad;
         if self.cage_angle_rad >= TAU {
             self.cage_angle_rad -= TAU;
@@ -133,7 +138,7 @@ fn main() -> ! {
     static mut QUEUE: Queue<Sample, QUEUE_SLOTS> = Queue::new();
     let (producer, mut consumer) = QUEUE.split();
     interrupt::free(|cs| *PRODUCER.borrow(cs).borrow_mut() = Some(producer));
-    let mut hub_motor = HubMotor::new().unwrap_or_else(|| exit(false));
+    let mut hub_motor = HubMotor::new(&whirl(0)).unwrap_or_else(|| exit(false));
     // A real firmware also sets up its clocks (168 MHz from the PLL) and sensors here.
     let mut syst = cortex_m::Peripherals::take()
         .unwrap_or_else(|| exit(false))
