@@ -13,64 +13,16 @@
 use bearing_core::film::ann::{prepare, AnnF32, AnnInt};
 use bearing_core::film::{ContactInput, FilmModel};
 use core::hint::black_box;
-use core::ptr::{read_volatile, write_volatile};
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
+use tim2::count;
+
+mod tim2;
 
 #[panic_handler]
 fn panic(_: &core::panic::PanicInfo) -> ! {
     debug::exit(debug::EXIT_FAILURE);
     loop {}
-}
-
-/// RCC APB1 clock enable (RM0090 §7.3.13, bit 0 = TIM2) and TIM2 registers (RM0090 §18.4).
-const RCC_APB1ENR: usize = 0x4002_3840;
-const TIM2: usize = 0x4000_0000;
-const TIM_CR1: usize = 0x00;
-const TIM_EGR: usize = 0x14;
-const TIM_CNT: usize = 0x24;
-const TIM_PSC: usize = 0x28;
-const TIM_ARR: usize = 0x2C;
-
-fn write(address: usize, value: u32) {
-    // SAFETY: RCC/TIM2 registers of the STM32F405 (and QEMU's model), used by nothing else here.
-    unsafe { write_volatile(address as *mut u32, value) }
-}
-
-#[inline(always)]
-fn now() -> u32 {
-    // SAFETY: TIM2's counter register; reading it has no side effect.
-    unsafe { read_volatile((TIM2 + TIM_CNT) as *const u32) }
-}
-
-#[inline(never)]
-fn nops_1000() -> u32 {
-    let s = now();
-    // SAFETY: `nop` only.
-    unsafe {
-        core::arch::asm!(
-            ".rept 1000",
-            "nop",
-            ".endr",
-            options(nomem, nostack, preserves_flags)
-        )
-    };
-    now().wrapping_sub(s)
-}
-
-#[inline(never)]
-fn nops_2000() -> u32 {
-    let s = now();
-    // SAFETY: `nop` only.
-    unsafe {
-        core::arch::asm!(
-            ".rept 2000",
-            "nop",
-            ".endr",
-            options(nomem, nostack, preserves_flags)
-        )
-    };
-    now().wrapping_sub(s)
 }
 
 static CASES: [ContactInput; 22] = [
@@ -274,25 +226,15 @@ static CASES: [ContactInput; 22] = [
     },
 ];
 
-fn count<T>(f: impl FnOnce() -> T, empty: u32) -> u32 {
-    let s = now();
-    let _ = black_box(f());
-    now().wrapping_sub(s).wrapping_sub(empty)
-}
-
 #[entry]
 fn main() -> ! {
-    write(RCC_APB1ENR, 1);
-    write(TIM2 + TIM_PSC, 0);
-    write(TIM2 + TIM_ARR, u32::MAX);
-    write(TIM2 + TIM_EGR, 1);
-    write(TIM2 + TIM_CR1, 1);
-    let calibration = nops_2000().wrapping_sub(nops_1000());
+    tim2::start();
+    let calibration = tim2::calibration();
     hprintln!(
         "calibration: 1000 nop -> {} counts (must be 1000)",
         calibration
     );
-    let empty = count(|| 0u32, 0);
+    let empty = tim2::empty();
     for (i, c) in CASES.iter().enumerate() {
         let p = prepare(c);
         let int_film = count(|| AnnInt.film(black_box(c)), empty);

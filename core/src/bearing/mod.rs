@@ -11,6 +11,8 @@ mod coupling;
 mod equilibrium;
 mod film_table;
 mod lockstep;
+#[cfg(feature = "nalgebra")]
+mod nalgebra;
 mod output;
 
 pub use coupling::NEWTON_ITERATIONS;
