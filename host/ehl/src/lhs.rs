@@ -1,5 +1,6 @@
-//! Latin-hypercube sampling of the PHYSICS.md §5.3 input domain (thesis Table 5.1), kept to
-//! Hertz pressures 0.3–3.5 GPa — the robustness population of the solver.
+//! Latin hypercubes: the stratified design itself ([`latin_hypercube`], over any source of
+//! random draws), and the sampling of the PHYSICS.md §5.3 input domain (thesis Table 5.1), kept
+//! to Hertz pressures 0.3–3.5 GPa — the robustness population of the solver.
 //!
 //! Each of the seven inputs (Q, u_m, R, E', α, η₀, l) is split into `n` equal-probability strata
 //! (uniform in the logarithm for the inputs spanning decades: Q, u_m, R, η₀, l; uniform for E'
@@ -37,9 +38,41 @@ const RANGES: [(f64, f64, bool); 7] = [
 /// Hertz-pressure window of the population, Pa.
 pub const HERTZ_PRESSURE_RANGE_PA: (f64, f64) = (0.3e9, 3.5e9);
 
+/// The random draws a Latin hypercube needs; the design is reproducible from the stream.
+pub trait StratumDraws {
+    /// A uniform index in `0..=i` (for the Fisher–Yates shuffle of the strata).
+    fn index_at_most(&mut self, i: usize) -> usize;
+    /// A uniform position in [0, 1) inside a stratum.
+    fn unit(&mut self) -> f64;
+}
+
+/// A random Latin hypercube of `n` points in [0, 1)^D: in every coordinate `d`, point `i` gets
+/// stratum `π_d(i)` of a random permutation (Fisher–Yates, Knuth, TAOCP vol. 2, Algorithm P),
+/// at a uniform random position inside it (McKay, Beckman & Conover 1979). The draws are taken
+/// coordinate by coordinate: the shuffle's, then one position per point.
+pub fn latin_hypercube<const D: usize>(n: usize, draws: &mut impl StratumDraws) -> Vec<[f64; D]> {
+    let mut points = vec![[0.0; D]; n];
+    for d in 0..D {
+        let mut strata: Vec<usize> = (0..n).collect();
+        for i in (1..n).rev() {
+            let j = draws.index_at_most(i);
+            strata.swap(i, j);
+        }
+        for (p, s) in points.iter_mut().zip(strata) {
+            p[d] = (s as f64 + draws.unit()) / n as f64;
+        }
+    }
+    points
+}
+
 struct SplitMix(u64);
-impl SplitMix {
-    fn next_f64(&mut self) -> f64 {
+
+impl StratumDraws for SplitMix {
+    fn index_at_most(&mut self, i: usize) -> usize {
+        ((self.unit() * (i + 1) as f64) as usize).min(i)
+    }
+
+    fn unit(&mut self) -> f64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -55,31 +88,18 @@ pub fn sample_domain(n: usize, seed: u64) -> Vec<Sample> {
     let mut kept = Vec::with_capacity(n);
     while kept.len() < n {
         // One hypercube of n points per round; keep those inside the pressure window.
-        let mut columns: Vec<Vec<f64>> = Vec::with_capacity(7);
-        for &(lo, hi, log) in &RANGES {
-            let mut strata: Vec<usize> = (0..n).collect();
-            for i in (1..n).rev() {
-                let j = (rng.next_f64() * (i + 1) as f64) as usize;
-                strata.swap(i, j.min(i));
-            }
-            let col = strata
-                .iter()
-                .map(|&s| {
-                    let t = (s as f64 + rng.next_f64()) / n as f64;
-                    if log {
-                        (lo.ln() + t * (hi.ln() - lo.ln())).exp()
-                    } else {
-                        lo + t * (hi - lo)
-                    }
-                })
-                .collect();
-            columns.push(col);
-        }
-        for k in 0..n {
+        for point in latin_hypercube::<7>(n, &mut rng) {
             if kept.len() == n {
                 break;
             }
-            let v: Vec<f64> = columns.iter().map(|c| c[k]).collect();
+            let mut v = [0.0; 7];
+            for ((value, t), &(lo, hi, log)) in v.iter_mut().zip(point).zip(&RANGES) {
+                *value = if log {
+                    (lo.ln() + t * (hi.ln() - lo.ln())).exp()
+                } else {
+                    lo + t * (hi - lo)
+                };
+            }
             let Ok(case) = ContactCase::new(v[0] / v[6], v[1], v[2], v[3], v[4], v[5]) else {
                 continue;
             };

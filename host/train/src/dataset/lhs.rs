@@ -8,6 +8,7 @@
 //! within one column (which keep the Latin property), evaluating each swap in O(n·dims) from
 //! the two changed rows only (Jin, Chen & Sudjianto 2005).
 
+use bearing_ehl::lhs::{latin_hypercube, StratumDraws};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -54,22 +55,24 @@ fn pair_term(d2: f64) -> f64 {
     d2.max(1e-300).powf(-0.5 * PHI_EXPONENT)
 }
 
-/// A random Latin hypercube: in every coordinate, point `i` gets stratum `π_d(i)` of a random
-/// permutation, at a uniform random position inside the stratum.
-pub fn random_lhs<const D: usize>(n: usize, rng: &mut ChaCha8Rng) -> Design<D> {
-    let mut points = vec![[0.0; D]; n];
-    for d in 0..D {
-        let mut strata: Vec<usize> = (0..n).collect();
-        // Fisher–Yates shuffle (Knuth, TAOCP vol. 2, Algorithm P).
-        for i in (1..n).rev() {
-            let j = rng.random_range(0..=i);
-            strata.swap(i, j);
-        }
-        for (p, s) in points.iter_mut().zip(strata) {
-            p[d] = (s as f64 + rng.random::<f64>()) / n as f64;
-        }
+/// The ChaCha8 stream as the draws of a Latin hypercube.
+struct ChaChaDraws<'a>(&'a mut ChaCha8Rng);
+
+impl StratumDraws for ChaChaDraws<'_> {
+    fn index_at_most(&mut self, i: usize) -> usize {
+        self.0.random_range(0..=i)
     }
-    Design { points }
+
+    fn unit(&mut self) -> f64 {
+        self.0.random::<f64>()
+    }
+}
+
+/// A random Latin hypercube ([`latin_hypercube`]) drawn from `rng`.
+pub fn random_lhs<const D: usize>(n: usize, rng: &mut ChaCha8Rng) -> Design<D> {
+    Design {
+        points: latin_hypercube::<D>(n, &mut ChaChaDraws(rng)),
+    }
 }
 
 /// A maximin-optimised Latin hypercube of `n` points, deterministic for `seed`.
