@@ -3,8 +3,8 @@
 //! Run: `cd benches/qemu-film-ann && cargo run --release` (needs the thumbv7em-none-eabihf target
 //! and qemu-system-arm). With `-icount shift=0` every guest instruction is 1 ns of virtual time
 //! (EMBEDDED.md); TIM2 of QEMU's STM32F405 model counts virtual nanoseconds at prescaler 0, so its
-//! counter difference is an instruction count (calibrated here on 1000 `nop`). Counts are
-//! instructions, not Cortex-M4 cycles. For each contact — 20 from the committed pipeline dataset,
+//! counter difference is an instruction count (`bearing-m4-counter`, calibrated on 1000 `nop`).
+//! Counts are instructions, not Cortex-M4 cycles. For each contact — 20 from the committed pipeline dataset,
 //! one out of the domain, one hostile — it prints the counts of `AnnInt::film`, `AnnF32::film` and
 //! of the networks alone; they must be the same for every contact.
 #![no_std]
@@ -12,8 +12,8 @@
 
 use bearing_core::film::ann::{prepare, AnnF32, AnnInt};
 use bearing_core::film::{ContactInput, FilmModel};
+use bearing_m4_counter as counter;
 use core::hint::black_box;
-use core::ptr::{read_volatile, write_volatile};
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 
@@ -21,56 +21,6 @@ use cortex_m_semihosting::{debug, hprintln};
 fn panic(_: &core::panic::PanicInfo) -> ! {
     debug::exit(debug::EXIT_FAILURE);
     loop {}
-}
-
-/// RCC APB1 clock enable (RM0090 §7.3.13, bit 0 = TIM2) and TIM2 registers (RM0090 §18.4).
-const RCC_APB1ENR: usize = 0x4002_3840;
-const TIM2: usize = 0x4000_0000;
-const TIM_CR1: usize = 0x00;
-const TIM_EGR: usize = 0x14;
-const TIM_CNT: usize = 0x24;
-const TIM_PSC: usize = 0x28;
-const TIM_ARR: usize = 0x2C;
-
-fn write(address: usize, value: u32) {
-    // SAFETY: RCC/TIM2 registers of the STM32F405 (and QEMU's model), used by nothing else here.
-    unsafe { write_volatile(address as *mut u32, value) }
-}
-
-#[inline(always)]
-fn now() -> u32 {
-    // SAFETY: TIM2's counter register; reading it has no side effect.
-    unsafe { read_volatile((TIM2 + TIM_CNT) as *const u32) }
-}
-
-#[inline(never)]
-fn nops_1000() -> u32 {
-    let s = now();
-    // SAFETY: `nop` only.
-    unsafe {
-        core::arch::asm!(
-            ".rept 1000",
-            "nop",
-            ".endr",
-            options(nomem, nostack, preserves_flags)
-        )
-    };
-    now().wrapping_sub(s)
-}
-
-#[inline(never)]
-fn nops_2000() -> u32 {
-    let s = now();
-    // SAFETY: `nop` only.
-    unsafe {
-        core::arch::asm!(
-            ".rept 2000",
-            "nop",
-            ".endr",
-            options(nomem, nostack, preserves_flags)
-        )
-    };
-    now().wrapping_sub(s)
 }
 
 static CASES: [ContactInput; 22] = [
@@ -274,20 +224,23 @@ static CASES: [ContactInput; 22] = [
     },
 ];
 
+/// Instructions of `f()`, less `empty` (those of the reads themselves).
 fn count<T>(f: impl FnOnce() -> T, empty: u32) -> u32 {
-    let s = now();
+    let s = counter::now();
     let _ = black_box(f());
-    now().wrapping_sub(s).wrapping_sub(empty)
+    counter::elapsed(s, counter::now())
+        .instructions
+        .wrapping_sub(empty)
 }
 
 #[entry]
 fn main() -> ! {
-    write(RCC_APB1ENR, 1);
-    write(TIM2 + TIM_PSC, 0);
-    write(TIM2 + TIM_ARR, u32::MAX);
-    write(TIM2 + TIM_EGR, 1);
-    write(TIM2 + TIM_CR1, 1);
-    let calibration = nops_2000().wrapping_sub(nops_1000());
+    let Some(mut peripherals) = cortex_m::Peripherals::take() else {
+        debug::exit(debug::EXIT_FAILURE);
+        loop {}
+    };
+    counter::start(&mut peripherals.SYST);
+    let calibration = counter::calibrate().instructions;
     hprintln!(
         "calibration: 1000 nop -> {} counts (must be 1000)",
         calibration

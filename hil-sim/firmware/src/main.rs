@@ -13,12 +13,12 @@
 #![no_std]
 #![no_main]
 
-mod counter;
 mod host_io;
 mod profile;
 mod stack;
 
 use bearing_hil_kernel::{kernel, outputs, wire};
+use bearing_m4_counter as counter;
 use core::hint::black_box;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::nr::open;

@@ -1,4 +1,5 @@
-//! Counting the instructions of a step on QEMU's Cortex-M4.
+//! Counting instructions on QEMU's Cortex-M4 (netduinoplus2), for the HIL firmware's steps and
+//! the film-network bench (`benches/qemu-film-ann`).
 //!
 //! QEMU does not implement the DWT cycle counter (it reads 0 while claiming to exist,
 //! EMBEDDED.md). With `-icount shift=0` every guest instruction advances virtual time by
@@ -15,6 +16,8 @@
 //!   SysTick period.
 //!
 //! Both count virtual time, i.e. instructions, not Cortex-M4 cycles: QEMU is not cycle accurate.
+
+#![no_std]
 
 use core::ptr::{read_volatile, write_volatile};
 use cortex_m::peripheral::syst::SystClkSource;
