@@ -13,6 +13,8 @@ use bearing_core::{
 };
 use serde::{Deserialize, Serialize};
 
+use crate::toml_lines::{self, TomlLines};
+
 /// A bearing configuration as written in the file.
 #[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields)]
@@ -140,17 +142,6 @@ impl fmt::Display for ConfigError {
 
 impl std::error::Error for ConfigError {}
 
-/// 1-based line of the first `key = …` in `text`.
-fn line_of_key(text: &str, key: &str) -> Option<usize> {
-    text.lines()
-        .position(|l| {
-            let t = l.trim_start();
-            t.strip_prefix(key)
-                .is_some_and(|rest| rest.trim_start().starts_with('='))
-        })
-        .map(|i| i + 1)
-}
-
 impl BearingConfig {
     /// Read and validate a configuration file.
     pub fn load(path: &Path) -> Result<(Self, BearingParams), ConfigError> {
@@ -166,11 +157,7 @@ impl BearingConfig {
     /// Parse and validate configuration `text`; `path` is only used in errors.
     pub fn parse(text: &str, path: &Path) -> Result<(Self, BearingParams), ConfigError> {
         let config: BearingConfig = toml::from_str(text).map_err(|e| {
-            // 1-based line of the span's start: the newlines before it, plus one
-            // (`lines().count()` is one short when the span starts a line).
-            let line = e
-                .span()
-                .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1);
+            let line = e.span().map(|s| toml_lines::line_at(text, s.start));
             ConfigError {
                 path: path.to_owned(),
                 line,
@@ -180,7 +167,7 @@ impl BearingConfig {
         })?;
         let params = config.params().map_err(|e| ConfigError {
             path: path.to_owned(),
-            line: line_of_key(text, e.field),
+            line: TomlLines::new(text).line_of_key(e.field),
             field: Some(e.field.to_owned()),
             message: e.to_string(),
         })?;

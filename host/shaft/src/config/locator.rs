@@ -3,52 +3,21 @@
 
 use std::path::Path;
 
+use bearing_host_common::toml_lines::TomlLines;
+
 use super::ConfigError;
 
-/// Source text plus path, to turn (table, index, key) into a line number.
+/// The file's path and its TOML key lines, to turn (table, index, key) into a line number.
 pub(super) struct Locator<'a> {
     pub(super) file: &'a Path,
-    pub(super) text: &'a str,
+    pub(super) lines: TomlLines<'a>,
 }
 
 impl Locator<'_> {
     /// Line of `key` inside the `index`-th `[[table]]` (or `[table]`, or the top level when
-    /// `table` is empty).
+    /// `table` is empty); the table's header line when the key is absent.
     pub(super) fn line(&self, table: &str, index: usize, key: &str) -> Option<usize> {
-        let lines: Vec<&str> = self.text.lines().collect();
-        let mut start = 0usize;
-        if !table.is_empty() {
-            let headers = [format!("[[{table}]]"), format!("[{table}]")];
-            let mut seen = 0usize;
-            let mut found = None;
-            for (i, l) in lines.iter().enumerate() {
-                let t = l.trim();
-                if headers.iter().any(|h| t.starts_with(h.as_str())) {
-                    if seen == index {
-                        found = Some(i);
-                        break;
-                    }
-                    seen += 1;
-                }
-            }
-            start = found?;
-        }
-        for (i, l) in lines.iter().enumerate().skip(start) {
-            let t = l.trim_start();
-            if i > start && t.starts_with('[') {
-                break;
-            }
-            if let Some(rest) = t.strip_prefix(key) {
-                if rest.trim_start().starts_with('=') {
-                    return Some(i + 1);
-                }
-            }
-        }
-        if table.is_empty() {
-            None
-        } else {
-            Some(start + 1)
-        }
+        self.lines.line_in_table(table, index, key)
     }
 
     pub(super) fn err(&self, table: &str, index: usize, key: &str, message: String) -> ConfigError {

@@ -39,6 +39,7 @@
 
 use std::path::{Path, PathBuf};
 
+use bearing_host_common::toml_lines::{line_at, TomlLines};
 use serde::Deserialize;
 
 use super::bearing::FilmChoice;
@@ -191,9 +192,7 @@ pub fn load_model(path: &Path) -> Result<RotorModel, ConfigError> {
 /// Parses shaft-file text (`path` names it in errors and resolves relative bearing configs).
 pub fn parse_model(path: &Path, text: &str) -> Result<RotorModel, ConfigError> {
     let file: ShaftFile = toml::from_str(text).map_err(|e| {
-        let line = e
-            .span()
-            .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1);
+        let line = e.span().map(|s| line_at(text, s.start));
         // The key on that line, for the message.
         let field = line
             .and_then(|l| text.lines().nth(l - 1))
@@ -207,6 +206,9 @@ pub fn parse_model(path: &Path, text: &str) -> Result<RotorModel, ConfigError> {
             message: e.message().to_string(),
         }
     })?;
-    let loc = Locator { file: path, text };
+    let loc = Locator {
+        file: path,
+        lines: TomlLines::new(text),
+    };
     describe(&loc, file).map(RotorModel::assemble)
 }
