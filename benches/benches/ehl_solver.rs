@@ -6,7 +6,7 @@
 //! time of the solving thread (Linux `/proc/thread-self/schedstat`, ns), which is what "on one
 //! core" means on a shared machine where other processes inflate the wall time.
 
-use bearing_host::ehl::{lhs, Solver, SolverOptions};
+use bearing_ehl::{lhs, Solver, SolverOptions};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::time::Instant;
 

@@ -14,13 +14,13 @@
 
 use std::path::Path;
 
-use bearing_host::shaft::bearing::{BearingSpec, BearingState, FilmChoice, LinearBearing};
-use bearing_host::shaft::config::load_model;
-use bearing_host::shaft::integrator::{Integrator, NewtonSettings, Scheme};
-use bearing_host::shaft::model::RotorModel;
-use bearing_host::shaft::operating::build_bearings;
-use bearing_host::shaft::statics::equilibrium;
-use bearing_host::shaft::system::TimeSystem;
+use bearing_shaft::bearing::{BearingSpec, BearingState, FilmChoice, LinearBearing};
+use bearing_shaft::config::load_model;
+use bearing_shaft::integrator::{Integrator, NewtonSettings, Scheme};
+use bearing_shaft::model::RotorModel;
+use bearing_shaft::operating::build_bearings;
+use bearing_shaft::statics::equilibrium;
+use bearing_shaft::system::TimeSystem;
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::DVector;
 

@@ -2,13 +2,11 @@
 //! bearing model on the host and on an emulated Cortex-M4, and checks the timing budget and the
 //! accuracy against the full numerical solver.
 //!
-//! `outputs`, `kernel`, `trace::wire` and `trace::crc32` use nothing from `std`: the firmware
-//! (`hil-sim/firmware`) includes those files with `#[path]` at its crate root, which is why
-//! `wire` and `crc32` are also re-exported here at the root (the shared files name each other
-//! through `super::`).
+//! `kernel`, `outputs`, `trace::wire` and `trace::crc32` are the `no_std` crate
+//! `bearing-hil-kernel`, which the firmware (`hil-sim/firmware`) runs too; they are re-exported
+//! here under their module names.
 
-pub mod kernel;
-pub mod outputs;
+pub use bearing_hil_kernel::{kernel, outputs};
 pub mod qemu;
 pub mod realtime;
 pub mod reference;

@@ -29,7 +29,7 @@ enum Command {
 }
 
 fn main() -> std::process::ExitCode {
-    if let Err(e) = bearing_host::cpu::check() {
+    if let Err(e) = bearing_host_common::cpu::check() {
         eprintln!("error: {e}");
         return std::process::ExitCode::from(1);
     }

@@ -1,5 +1,5 @@
 //! The accuracy reference: the bearing state of a sample recomputed with the full numerical
-//! EHL solver (`bearing_host::ehl`) in every loaded contact, the film–load coupling converged,
+//! EHL solver (`bearing_ehl`) in every loaded contact, the film–load coupling converged,
 //! in f64.
 //!
 //! For each roller the fixed point of PHYSICS.md §4 is solved exactly as the core defines it —
@@ -20,7 +20,7 @@ use crate::replay::{AccuracyReference, ReferenceOutputs, StepFault};
 use crate::trace::{Sample, TraceMeta};
 use bearing_core::contact::{HertzLineContact, PALMGREN_K};
 use bearing_core::{BearingParams, ContactLaw, Crown};
-use bearing_host::ehl::{ContactCase, EhlSolution, Solver, SolverOptions};
+use bearing_ehl::{ContactCase, EhlSolution, Solver, SolverOptions};
 
 /// Slices per roller, as in the kernel.
 const SLICES: usize = kernel::SLICES;

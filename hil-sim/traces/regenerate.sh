@@ -5,7 +5,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 cd "$root"
-cargo build --release -p bearing-host --bin bearing -p bearing-hil --bin hil-sim
+cargo build --release -p bearing-cli --bin bearing -p bearing-hil --bin hil-sim
 bearing="$root/target/release/bearing"
 hil="$root/target/release/hil-sim"
 work="$(mktemp -d)"

@@ -2,7 +2,7 @@
 //! a solve performs only the allocations of its result (the three profile vectors), however many
 //! iterations it takes. Checked with a counting global allocator (this test binary only).
 
-use bearing_host::ehl::{ContactCase, Solver, SolverOptions};
+use bearing_ehl::{ContactCase, Solver, SolverOptions};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 

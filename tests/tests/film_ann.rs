@@ -12,11 +12,11 @@ use std::path::PathBuf;
 
 use bearing_core::film::ann::{self, AnnF32, AnnInt};
 use bearing_core::film::{FilmModel, FilmSource};
-use bearing_host::ann::export::{fingerprint, render};
-use bearing_host::ann::metrics::Metrics;
-use bearing_host::ann::model::ModelFile;
-use bearing_host::ann::pipeline::{load_samples, predict_int, split_samples};
-use bearing_host::ann::train::Samples;
+use bearing_train::ann::export::{fingerprint, render};
+use bearing_train::ann::metrics::Metrics;
+use bearing_train::ann::model::ModelFile;
+use bearing_train::ann::pipeline::{load_samples, predict_int, split_samples};
+use bearing_train::ann::train::Samples;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")

@@ -18,7 +18,7 @@ use std::path::Path;
 #[test]
 fn a_trace_at_static_equilibrium_replays_to_the_applied_load() {
     let config = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/hub_motor.toml");
-    let (_, params) = bearing_host::config::BearingConfig::load(&config).unwrap();
+    let (_, params) = bearing_host_common::config::BearingConfig::load(&config).unwrap();
     let speed = 21_000.0f32 * std::f32::consts::PI / 30.0;
     let start = OperatingState {
         displacement_m: [0.0, -5.0e-6],

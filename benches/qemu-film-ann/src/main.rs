@@ -3,8 +3,8 @@
 //! Run: `cd benches/qemu-film-ann && cargo run --release` (needs the thumbv7em-none-eabihf target
 //! and qemu-system-arm). With `-icount shift=0` every guest instruction is 1 ns of virtual time
 //! (EMBEDDED.md); TIM2 of QEMU's STM32F405 model counts virtual nanoseconds at prescaler 0, so its
-//! counter difference is an instruction count (calibrated here on 1000 `nop`). Counts are
-//! instructions, not Cortex-M4 cycles. For each contact — 20 from the committed pipeline dataset,
+//! counter difference is an instruction count (`bearing-m4-counter`, calibrated on 1000 `nop`).
+//! Counts are instructions, not Cortex-M4 cycles. For each contact — 20 from the committed pipeline dataset,
 //! one out of the domain, one hostile — it prints the counts of `AnnInt::film`, `AnnF32::film` and
 //! of the networks alone; they must be the same for every contact.
 #![no_std]
@@ -12,12 +12,10 @@
 
 use bearing_core::film::ann::{prepare, AnnF32, AnnInt};
 use bearing_core::film::{ContactInput, FilmModel};
+use bearing_m4_counter as counter;
 use core::hint::black_box;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
-use tim2::count;
-
-mod tim2;
 
 #[panic_handler]
 fn panic(_: &core::panic::PanicInfo) -> ! {
@@ -226,15 +224,28 @@ static CASES: [ContactInput; 22] = [
     },
 ];
 
+/// Instructions of `f()`, less `empty` (those of the reads themselves).
+fn count<T>(f: impl FnOnce() -> T, empty: u32) -> u32 {
+    let s = counter::now();
+    let _ = black_box(f());
+    counter::elapsed(s, counter::now())
+        .instructions
+        .wrapping_sub(empty)
+}
+
 #[entry]
 fn main() -> ! {
-    tim2::start();
-    let calibration = tim2::calibration();
+    let Some(mut peripherals) = cortex_m::Peripherals::take() else {
+        debug::exit(debug::EXIT_FAILURE);
+        loop {}
+    };
+    counter::start(&mut peripherals.SYST);
+    let calibration = counter::calibrate().instructions;
     hprintln!(
         "calibration: 1000 nop -> {} counts (must be 1000)",
         calibration
     );
-    let empty = tim2::empty();
+    let empty = count(|| 0u32, 0);
     for (i, c) in CASES.iter().enumerate() {
         let p = prepare(c);
         let int_film = count(|| AnnInt.film(black_box(c)), empty);

@@ -5,7 +5,7 @@
 //! row per function the bearing step calls, over the domain the step calls it on:
 //!
 //! - instructions per call, fewest and most over 64 arguments spread over the domain (TIM2
-//!   under `-icount shift=0`, see `tim2.rs`); the function inlined into the measured closure
+//!   under `-icount shift=0`, see `bearing-m4-counter`); the function inlined into the measured closure
 //!   as into the step;
 //! - the worst error over 20 001 arguments spread over the domain (geometrically for positive
 //!   domains spanning decades, evenly otherwise), against the f64 function of the same f32
@@ -24,10 +24,23 @@ use core::hint::black_box;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use micromath::F32Ext;
-use tim2::count;
 
-#[path = "../../qemu-film-ann/src/tim2.rs"]
-mod tim2;
+use bearing_m4_counter as counter;
+
+/// Instructions of `f()` (its result kept by `black_box`), less `empty` (the count of an empty
+/// measurement, [`empty`]).
+fn count<T>(f: impl FnOnce() -> T, empty: u32) -> u32 {
+    let start = counter::now();
+    let _ = core::hint::black_box(f());
+    counter::elapsed(start, counter::now())
+        .instructions
+        .wrapping_sub(empty)
+}
+
+/// The count of an empty measurement, to subtract from [`count`]'s.
+fn empty() -> u32 {
+    count(|| 0u32, 0)
+}
 
 #[panic_handler]
 fn panic(_: &core::panic::PanicInfo) -> ! {
@@ -180,13 +193,19 @@ fn row<'a>(
 fn main() -> ! {
     use Error::{Absolute, Relative};
     use Spacing::{Geometric, Linear};
-    tim2::start();
-    let calibration = tim2::calibration();
+    let Some(mut peripherals) = cortex_m::Peripherals::take() else {
+        debug::exit(debug::EXIT_FAILURE);
+        loop {
+            core::hint::spin_loop();
+        }
+    };
+    counter::start(&mut peripherals.SYST);
+    let calibration = counter::calibrate().instructions;
     hprintln!(
         "calibration: 1000 nop -> {} counts (must be 1000)",
         calibration
     );
-    let empty = tim2::empty();
+    let empty = empty();
     hprintln!("| step function (core) → micromath | domain (the step's call sites) | core instr. | micromath instr. | core worst error | micromath worst error |");
     hprintln!("|---|---|---|---|---|---|");
     let rows = [

@@ -1,11 +1,11 @@
 //! `bearing-hil-firmware`: the replay loop of the HIL harness on a Cortex-M4F.
 //!
 //! Run under `qemu-system-arm -machine netduinoplus2 -icount shift=0` with semihosting, in a
-//! directory holding `trace.bin` (the binary trace format of `hil-sim/src/trace/wire.rs`). The
+//! directory holding `trace.bin` (the binary trace format of `hil-sim/kernel/src/wire.rs`). The
 //! firmware streams the trace record by record, checks its header and checksum with the same
 //! decoder the host uses, steps the same kernel the host replay uses
-//! (`hil-sim/src/kernel.rs`, which calls the core), counts the instructions of every step with
-//! SysTick, and writes `outputs.bin` (`hil-sim/src/outputs.rs`): the count and the outputs of
+//! (`hil-sim/kernel/src/kernel.rs`, which calls the core), counts the instructions of every step with
+//! SysTick, and writes `outputs.bin` (`hil-sim/kernel/src/outputs.rs`): the count and the outputs of
 //! every step, then a trailer with the peak stack and the SysTick calibration. Logs go out as
 //! defmt frames over semihosting stdout (`defmt-print -e <elf>` decodes them). The exit code
 //! (semihosting SYS_EXIT_EXTENDED) is 0 on success and names the failure otherwise.
@@ -13,27 +13,12 @@
 #![no_std]
 #![no_main]
 
-// The shared no_std sources of the host crate, compiled here unchanged (they name each other
-// through `super::`, which is this crate's root here and `bearing_hil`'s root on the host).
-// They also hold host-side helpers (encoders, decoders) the firmware does not call.
-#[allow(dead_code)]
-#[path = "../../src/trace/crc32.rs"]
-mod crc32;
-#[allow(dead_code)]
-#[path = "../../src/kernel.rs"]
-mod kernel;
-#[allow(dead_code)]
-#[path = "../../src/outputs.rs"]
-mod outputs;
-#[allow(dead_code)]
-#[path = "../../src/trace/wire.rs"]
-mod wire;
-
-mod counter;
 mod host_io;
 mod profile;
 mod stack;
 
+use bearing_hil_kernel::{kernel, outputs, wire};
+use bearing_m4_counter as counter;
 use core::hint::black_box;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::nr::open;

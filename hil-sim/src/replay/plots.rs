@@ -5,7 +5,7 @@
 use super::engine::ReplayRun;
 use super::stats::percentile_sorted;
 use crate::trace::Trace;
-use bearing_host::plot_style::draw_legend;
+use bearing_host_common::plot_style::draw_legend;
 use plotters::prelude::*;
 use std::path::Path;
 

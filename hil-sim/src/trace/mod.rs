@@ -12,11 +12,11 @@
 //! Every error says where (line and column, or record and field, or byte offset) and what.
 
 pub mod binary;
-pub mod crc32;
 pub mod csv;
 pub mod synthetic;
 pub mod validate;
-pub mod wire;
+
+pub use bearing_hil_kernel::{crc32, wire};
 
 use std::fmt;
 use std::path::Path;

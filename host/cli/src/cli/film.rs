@@ -1,0 +1,281 @@
+//! `bearing film`: film thickness and Hertz figures of one line contact, every film model side
+//! by side — the numerical solution, the f32 and integer networks (flagged when they fall back),
+//! the regression formulas, Moes and Martin — with each model's error against the numerical one.
+
+use std::path::PathBuf;
+
+use anyhow::{bail, Context};
+use bearing_core::contact::HertzLineContact;
+use bearing_core::film::ann::{AnnF32, AnnInt};
+use bearing_core::film::{moes_central, Hydrodynamic, LnGroups};
+use bearing_core::{ContactInput, FilmModel, FilmSource, Regime, Regression};
+use bearing_ehl::{self as ehl, ContactCase, EhlError, EhlSolution, SolverOptions};
+use clap::Args;
+use serde_json::json;
+
+use super::common::{non_negative, positive, print_json, rad_per_s};
+use super::film_plot::{self, PlotOver};
+use bearing_host_common::config::BearingConfig;
+
+/// Film thickness of a line contact from every available film model.
+///
+/// Give the contact in SI units (`--load --length --entrainment --radius --modulus --alpha
+/// --eta0`, E' as PHYSICS.md §1 defines it), or a bearing with `--config FILE --speed-rpm RPM
+/// --roller-load N` (both contacts of the roller are shown).
+#[derive(Args, Debug)]
+pub struct FilmArgs {
+    /// Roller load Q (N).
+    #[arg(long, value_parser = positive, conflicts_with = "config")]
+    pub load: Option<f64>,
+    /// Effective contact length l (m).
+    #[arg(long, value_parser = positive, conflicts_with = "config")]
+    pub length: Option<f64>,
+    /// Entrainment speed u_m (m/s).
+    #[arg(long, value_parser = positive, conflicts_with = "config")]
+    pub entrainment: Option<f64>,
+    /// Reduced radius R (m).
+    #[arg(long, value_parser = positive, conflicts_with = "config")]
+    pub radius: Option<f64>,
+    /// Reduced modulus E' (Pa).
+    #[arg(long, value_parser = positive, conflicts_with = "config")]
+    pub modulus: Option<f64>,
+    /// Pressure–viscosity coefficient α (1/Pa).
+    #[arg(long, value_parser = non_negative, conflicts_with = "config")]
+    pub alpha: Option<f64>,
+    /// Ambient viscosity η₀ (Pa·s).
+    #[arg(long, value_parser = positive, conflicts_with = "config")]
+    pub eta0: Option<f64>,
+    /// Bearing configuration (TOML).
+    #[arg(long, requires_all = ["speed_rpm", "roller_load"])]
+    pub config: Option<PathBuf>,
+    /// Shaft speed (rpm), with --config.
+    #[arg(long, value_parser = positive, requires = "config")]
+    pub speed_rpm: Option<f64>,
+    /// Roller load (N), with --config.
+    #[arg(long, value_parser = positive, requires = "config")]
+    pub roller_load: Option<f64>,
+    /// Machine-readable output.
+    #[arg(long)]
+    pub json: bool,
+    /// Also draw the central film of every model against load or speed (PNG), with each
+    /// model's error against the numerical solution (with --config: the inner contact).
+    #[arg(long, value_name = "FILE.png")]
+    pub plot: Option<PathBuf>,
+    /// What the plot varies about the contact's own value.
+    #[arg(long, value_enum, default_value = "load")]
+    pub plot_over: PlotOver,
+    /// Points of the plot (each is one numerical solve).
+    #[arg(long, default_value_t = 25, value_parser = clap::value_parser!(u16).range(2..=400))]
+    pub plot_points: u16,
+    /// The plot spans value/F … value·F.
+    #[arg(long, default_value_t = 10.0, value_parser = positive)]
+    pub plot_span: f64,
+}
+
+/// Draw `--plot` for `contact` if asked, and say where.
+fn maybe_plot(args: &FilmArgs, contact: &ContactInput, title: &str) -> anyhow::Result<()> {
+    if let Some(path) = &args.plot {
+        if args.plot_span <= 1.0 {
+            bail!("--plot-span must exceed 1 (got {})", args.plot_span);
+        }
+        film_plot::plot(
+            contact,
+            args.plot_over,
+            usize::from(args.plot_points),
+            args.plot_span,
+            title,
+            path,
+        )
+        .with_context(|| format!("drawing {}", path.display()))?;
+        if !args.json {
+            println!("plot: {}", path.display());
+        }
+    }
+    Ok(())
+}
+
+/// The numerical solution of the contact (PHYSICS.md §5.2, default options): the reference
+/// of every other film model.
+pub(super) fn numerical_solution(contact: &ContactInput) -> Result<EhlSolution, EhlError> {
+    ContactCase::new(
+        f64::from(contact.load_per_length_n_per_m()),
+        f64::from(contact.entrainment_speed_m_s),
+        f64::from(contact.reduced_radius_m),
+        f64::from(contact.reduced_modulus_pa),
+        f64::from(contact.pressure_viscosity_pa_inv),
+        f64::from(contact.viscosity_pa_s),
+    )
+    .and_then(|case| ehl::solve(&case, &SolverOptions::default()))
+}
+
+/// Every film model's answer for one contact.
+fn report(contact: &ContactInput) -> serde_json::Value {
+    let hertz = HertzLineContact::new(
+        contact.load_per_length_n_per_m(),
+        contact.reduced_radius_m,
+        contact.reduced_modulus_pa,
+    );
+    let g = LnGroups::new(contact);
+    let regime = Regime::from_ln_moes(g.ln_m(), g.ln_l());
+    let (m, l) = (g.ln_m().exp(), g.ln_l().exp());
+    // Moes: H_c = (h_c/R)(2U)^−1/2.
+    let moes_m = moes_central(m, l) * (2.0 * g.ln_u.exp()).sqrt() * contact.reduced_radius_m;
+    let numerical = numerical_solution(contact);
+    let reference = numerical.as_ref().ok().map(|n| n.central_film_m);
+    let entry = |name: &str, central: f32, minimum: Option<f32>, fell_back: bool| {
+        let error = reference.map(|r| (f64::from(central) - r) / r);
+        json!({"name": name, "central_film_m": central, "min_film_m": minimum, "regime": regime.name(),
+               "fell_back": fell_back, "central_rel_err_vs_numerical": error})
+    };
+    let regression = Regression.film(contact);
+    let hydro = Hydrodynamic.film(contact);
+    let ann_f32 = AnnF32.film(contact);
+    let ann_int = AnnInt.film(contact);
+    let numerical_entry = match &numerical {
+        Ok(n) => {
+            json!({"name": "numerical", "central_film_m": n.central_film_m, "min_film_m": n.min_film_m,
+                        "regime": regime.name(), "fell_back": false, "central_rel_err_vs_numerical": 0.0})
+        }
+        Err(e) => {
+            json!({"name": "numerical", "central_film_m": null, "min_film_m": null, "regime": regime.name(),
+                         "fell_back": false, "error": e.to_string()})
+        }
+    };
+    json!({
+        "input": {
+            "load_n": contact.load_n, "length_m": contact.length_m,
+            "entrainment_speed_m_s": contact.entrainment_speed_m_s, "reduced_radius_m": contact.reduced_radius_m,
+            "reduced_modulus_pa": contact.reduced_modulus_pa, "pressure_viscosity_pa_inv": contact.pressure_viscosity_pa_inv,
+            "viscosity_pa_s": contact.viscosity_pa_s,
+        },
+        "dimensionless": {"w": g.ln_w.exp(), "u": g.ln_u.exp(), "g": g.ln_g.exp(), "m": m, "l": l},
+        "regime": regime.name(),
+        "hertz": {"half_width_m": hertz.half_width_m, "max_pressure_pa": hertz.max_pressure_pa},
+        "models": [
+            numerical_entry,
+            entry("ann_f32", ann_f32.central_m, Some(ann_f32.minimum_m), ann_f32.source == FilmSource::Fallback),
+            entry("ann_int", ann_int.central_m, Some(ann_int.minimum_m), ann_int.source == FilmSource::Fallback),
+            entry("regression", regression.central_m, Some(regression.minimum_m), false),
+            entry("moes", moes_m, None, false),
+            entry("hydrodynamic", hydro.central_m, Some(hydro.minimum_m), false),
+        ],
+    })
+}
+
+fn print_human(title: &str, r: &serde_json::Value) {
+    let f = |v: &serde_json::Value| v.as_f64().unwrap_or(f64::NAN);
+    println!("{title}");
+    let d = &r["dimensionless"];
+    println!(
+        "  W = {:.3e}  U = {:.3e}  G = {:.0}  M = {:.3}  L = {:.3}  regime: {}",
+        f(&d["w"]),
+        f(&d["u"]),
+        f(&d["g"]),
+        f(&d["m"]),
+        f(&d["l"]),
+        r["regime"].as_str().unwrap_or("?")
+    );
+    println!(
+        "  Hertz: half-width b = {:.2} µm, max pressure p_h = {:.3} GPa",
+        f(&r["hertz"]["half_width_m"]) * 1e6,
+        f(&r["hertz"]["max_pressure_pa"]) * 1e-9
+    );
+    println!(
+        "  {:<14} {:>14} {:>14} {:>14}",
+        "model", "central (nm)", "minimum (nm)", "vs numerical"
+    );
+    for m in r["models"].as_array().into_iter().flatten() {
+        let min = m["min_film_m"]
+            .as_f64()
+            .map_or("–".to_string(), |v| format!("{:.1}", v * 1e9));
+        let err = m["central_rel_err_vs_numerical"]
+            .as_f64()
+            .map_or("–".to_string(), |v| format!("{:+.2} %", v * 100.0));
+        let note = if m["fell_back"].as_bool() == Some(true) {
+            "  (outside the network's domain: regression fallback)".to_string()
+        } else if let Some(e) = m["error"].as_str() {
+            format!("  ({e})")
+        } else {
+            String::new()
+        };
+        println!(
+            "  {:<14} {:>14.1} {:>14} {:>14}{note}",
+            m["name"].as_str().unwrap_or("?"),
+            f(&m["central_film_m"]) * 1e9,
+            min,
+            err
+        );
+    }
+}
+
+/// Run `bearing film`.
+pub fn run(args: FilmArgs) -> anyhow::Result<()> {
+    if let Some(path) = &args.config {
+        let (config, params) = BearingConfig::load(path)?;
+        let speed = rad_per_s(
+            args.speed_rpm
+                .context("--speed-rpm is required with --config")?,
+        );
+        let load = args
+            .roller_load
+            .context("--roller-load is required with --config")? as f32;
+        let inner_contact = params.contact_input(false, load, speed);
+        let inner = report(&inner_contact);
+        let outer = report(&params.contact_input(true, load, speed));
+        maybe_plot(
+            &args,
+            &inner_contact,
+            &format!("{}, inner contact", config.name),
+        )?;
+        if args.json {
+            let mut value = inner.clone();
+            value["contact"] = json!("inner");
+            value["bearing"] = json!(config.name);
+            value["outer"] = outer;
+            return print_json(&value);
+        }
+        print_human(&format!("{}: inner contact", config.name), &inner);
+        print_human(&format!("{}: outer contact", config.name), &outer);
+        return Ok(());
+    }
+    let missing: Vec<&str> = [
+        ("--load", args.load),
+        ("--length", args.length),
+        ("--entrainment", args.entrainment),
+        ("--radius", args.radius),
+        ("--modulus", args.modulus),
+        ("--alpha", args.alpha),
+        ("--eta0", args.eta0),
+    ]
+    .iter()
+    .filter(|(_, v)| v.is_none())
+    .map(|(n, _)| *n)
+    .collect();
+    if !missing.is_empty() {
+        bail!(
+            "missing {} (or give --config FILE --speed-rpm RPM --roller-load N)",
+            missing.join(", ")
+        );
+    }
+    let v = |o: Option<f64>| o.unwrap_or(0.0) as f32;
+    let contact = ContactInput {
+        load_n: v(args.load),
+        length_m: v(args.length),
+        entrainment_speed_m_s: v(args.entrainment),
+        reduced_radius_m: v(args.radius),
+        reduced_modulus_pa: v(args.modulus),
+        pressure_viscosity_pa_inv: v(args.alpha),
+        viscosity_pa_s: v(args.eta0),
+    };
+    if !contact.is_valid() {
+        bail!("the contact is not valid in f32 (a value overflows or underflows single precision)");
+    }
+    let r = report(&contact);
+    maybe_plot(&args, &contact, "line contact")?;
+    if args.json {
+        print_json(&r)
+    } else {
+        print_human("Line contact", &r);
+        Ok(())
+    }
+}

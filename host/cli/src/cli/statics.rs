@@ -1,0 +1,208 @@
+//! `bearing static`: static equilibrium of the inner race under a radial load, lubricated and
+//! (on request) dry side by side.
+
+use std::path::PathBuf;
+
+use anyhow::{bail, Context};
+use bearing_core::{OperatingState, Regression};
+use clap::Args;
+use serde_json::json;
+
+use super::common::{non_negative, print_json, rad_per_s};
+use bearing_host_common::config::BearingConfig;
+use bearing_host_common::rolling::{new_bearing, DynBearing, StepSnapshot};
+
+/// Static equilibrium of the inner race under a radial load along −y.
+#[derive(Args, Debug)]
+pub struct StaticArgs {
+    /// Bearing configuration (TOML).
+    #[arg(long)]
+    pub config: PathBuf,
+    /// Radial load on the inner race (N), acting along −y; default: the config's `[case]`.
+    #[arg(long, value_parser = non_negative)]
+    pub radial_load: Option<f64>,
+    /// Shaft speed (rpm); default: the config's `[case]`. Zero gives the dry bearing.
+    #[arg(long, value_parser = non_negative)]
+    pub speed_rpm: Option<f64>,
+    /// Also solve the dry bearing (film ≡ 0) and show it beside the lubricated one.
+    #[arg(long)]
+    pub dry: bool,
+    /// Machine-readable output.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Relative force residual at which the equilibrium is accepted.
+const TOLERANCE: f32 = 1.0e-6;
+/// Newton iterations allowed.
+const MAX_ITERATIONS: usize = 300;
+
+struct Solution {
+    displacement_m: [f32; 2],
+    residual_n: f32,
+    iterations: usize,
+    step: StepSnapshot,
+}
+
+fn solve(
+    bearing: &mut dyn DynBearing,
+    lubricated: bool,
+    load_n: f32,
+    speed: f32,
+) -> anyhow::Result<Solution> {
+    // Roller 0 on the load line (−y) gives the symmetric load zone of the textbooks.
+    let start = OperatingState::new(
+        [0.0; 2],
+        [0.0; 2],
+        [0.0; 2],
+        speed,
+        -std::f32::consts::FRAC_PI_2,
+    )?;
+    bearing.reset();
+    let force = [0.0, -load_n];
+    let eq = if lubricated {
+        bearing.static_equilibrium(Some(&Regression), force, &start, TOLERANCE, MAX_ITERATIONS)
+    } else {
+        bearing.static_equilibrium(None, force, &start, TOLERANCE, MAX_ITERATIONS)
+    };
+    if !eq.converged {
+        bail!(
+            "{} equilibrium not reached after {} Newton iterations: force residual {:.3e} N (tolerance {:.1e}·F)",
+            if lubricated { "lubricated" } else { "dry" },
+            eq.iterations,
+            eq.residual_n,
+            TOLERANCE
+        );
+    }
+    let state = OperatingState {
+        displacement_m: eq.displacement_m,
+        ..start
+    };
+    let step = if lubricated {
+        bearing.step(&Regression, &state)
+    } else {
+        bearing.step_dry(&state)
+    };
+    Ok(Solution {
+        displacement_m: eq.displacement_m,
+        residual_n: eq.residual_n,
+        iterations: eq.iterations,
+        step,
+    })
+}
+
+fn to_json(s: &Solution, film: &str) -> serde_json::Value {
+    let k = s.step.radial_stiffness_n_per_m();
+    json!({
+        "film_model": film,
+        "displacement_m": s.displacement_m,
+        "force_residual_n": s.residual_n,
+        "iterations": s.iterations,
+        "max_roller_load_n": s.step.max_roller_load_n(),
+        "stiffness_n_per_m": k,
+        "stiffness_full": s.step.stiffness,
+        "rollers": s.step.rollers.iter().map(|r| json!({
+            "angle_rad": r.angle_rad,
+            "load_n": r.load_n,
+            "approach_m": r.approach_m,
+            "central_film_in_m": r.central_film_in_m,
+            "central_film_out_m": r.central_film_out_m,
+            "min_film_in_m": r.min_film_in_m,
+            "min_film_out_m": r.min_film_out_m,
+            "contact_stiffness_n_per_m": r.contact_stiffness_n_per_m,
+            "roller_stiffness_n_per_m": r.roller_stiffness_n_per_m,
+            "regime": r.regime_in.name(),
+            "regime_out": r.regime_out.name(),
+        })).collect::<Vec<_>>(),
+    })
+}
+
+fn print_human(title: &str, s: &Solution) {
+    let k = s.step.radial_stiffness_n_per_m();
+    println!("{title}");
+    println!(
+        "  displacement x = {:.4} µm, y = {:.4} µm   (residual {:.2e} N after {} Newton iterations)",
+        s.displacement_m[0] * 1e6,
+        s.displacement_m[1] * 1e6,
+        s.residual_n,
+        s.iterations
+    );
+    println!(
+        "  stiffness (N/µm): [[{:.1}, {:.1}], [{:.1}, {:.1}]]   max roller load {:.1} N",
+        k[0][0] * 1e-6,
+        k[0][1] * 1e-6,
+        k[1][0] * 1e-6,
+        k[1][1] * 1e-6,
+        s.step.max_roller_load_n()
+    );
+    println!(
+        "  {:>6} {:>9} {:>10} {:>10} {:>10} {:>12}  regime",
+        "roller", "angle°", "load N", "h_in nm", "h_out nm", "k N/µm"
+    );
+    for (j, r) in s.step.rollers.iter().enumerate() {
+        println!(
+            "  {:>6} {:>9.1} {:>10.2} {:>10.1} {:>10.1} {:>12.2}  {}",
+            j,
+            r.angle_rad.to_degrees(),
+            r.load_n,
+            r.central_film_in_m * 1e9,
+            r.central_film_out_m * 1e9,
+            r.roller_stiffness_n_per_m * 1e-6,
+            r.regime_in.name()
+        );
+    }
+}
+
+/// Run `bearing static`.
+pub fn run(args: StaticArgs) -> anyhow::Result<()> {
+    let (config, params) = BearingConfig::load(&args.config)?;
+    let load = args
+        .radial_load
+        .or(config.case.radial_load_n.map(f64::from))
+        .context(
+            "no radial load: give --radial-load N or set [case] radial_load_n in the config",
+        )?;
+    let rpm = args
+        .speed_rpm
+        .or(config.case.speed_rpm.map(f64::from))
+        .unwrap_or(0.0);
+    let speed = rad_per_s(rpm);
+    let mut bearing =
+        new_bearing(params).map_err(|e| anyhow::anyhow!("{}: {e}", args.config.display()))?;
+    let lubricated = rpm > 0.0;
+    let main = solve(bearing.as_mut(), lubricated, load as f32, speed)?;
+    let dry = if args.dry && lubricated {
+        Some(solve(bearing.as_mut(), false, load as f32, speed)?)
+    } else {
+        None
+    };
+    let film = if lubricated { "regression" } else { "dry" };
+    if args.json {
+        let mut value = to_json(&main, film);
+        value["bearing"] = json!(config.name);
+        value["radial_load_n"] = json!(load);
+        value["speed_rpm"] = json!(rpm);
+        if let Some(d) = &dry {
+            value["dry"] = to_json(d, "dry");
+        }
+        return print_json(&value);
+    }
+    print_human(
+        &format!(
+            "{} — {:.0} N radial at {:.0} rpm, {} film",
+            config.name, load, rpm, film
+        ),
+        &main,
+    );
+    if let Some(d) = &dry {
+        print_human("dry (film ≡ 0), same load", d);
+        let (kl, kd) = (main.step.stiffness[1][1], d.step.stiffness[1][1]);
+        println!(
+            "\nlubricated vs dry: K_yy {:+.1} %, max roller load {:+.1} %, displacement y {:+.3} µm",
+            (kl / kd - 1.0) * 100.0,
+            (main.step.max_roller_load_n() / d.step.max_roller_load_n() - 1.0) * 100.0,
+            (main.displacement_m[1] - d.displacement_m[1]) * 1e6
+        );
+    }
+    Ok(())
+}

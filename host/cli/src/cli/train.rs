@@ -1,0 +1,344 @@
+//! `bearing train`: train the film network on a dataset (`bearing train --data … --arch …`),
+//! run the architecture sweep (`bearing train sweep`), or measure the compiled core models on a
+//! model's test set (`bearing train evaluate`).
+
+use std::path::PathBuf;
+
+use anyhow::{bail, Context, Result};
+use bearing_core::film::{ann, FilmModel, FilmSource};
+use bearing_train::ann::export::fingerprint;
+use bearing_train::ann::features::{InputSet, TargetForm};
+use bearing_train::ann::metrics::Metrics;
+use bearing_train::ann::mlp::Activation;
+use bearing_train::ann::model::{CoreReport, ModelFile};
+use bearing_train::ann::pipeline::{load_samples, split_samples, train_model};
+use bearing_train::ann::sweep::{heading, markdown, run_sweep, SweepConfig};
+use bearing_train::ann::train::{Solver, TrainOptions};
+use clap::{Args, Subcommand};
+
+/// `bearing train …`
+#[derive(Args)]
+#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
+pub struct TrainArgs {
+    #[command(subcommand)]
+    command: Option<TrainCommand>,
+    #[command(flatten)]
+    train: TrainOne,
+}
+
+#[derive(Subcommand)]
+enum TrainCommand {
+    /// Architecture study: layers × neurons × activation × samples → markdown + JSON.
+    Sweep(SweepArgs),
+    /// Measure the compiled core networks (`AnnF32`, `AnnInt`) on the model's test set.
+    Evaluate(EvaluateArgs),
+}
+
+/// Options shared by training and the sweep.
+#[derive(Args, Clone)]
+struct Common {
+    /// Network inputs.
+    #[arg(long, value_enum, default_value = "wug")]
+    inputs: InputSet,
+    /// Output form.
+    #[arg(long, value_enum, default_value = "log-ratio")]
+    target: TargetForm,
+    /// Weight-decay coefficient λ (0 … 1).
+    #[arg(long, default_value_t = 1e-7)]
+    reg: f64,
+    /// Epoch limit (1 … 100 000).
+    #[arg(long, default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..=100_000))]
+    max_epochs: u64,
+    /// Early-stopping patience in epochs (1 … 1000).
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u64).range(1..=1000))]
+    patience: u64,
+    /// Seed of the split and initial weights.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Random restarts (best validation kept, 1 … 100).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=100))]
+    restarts: u64,
+    /// Levenberg–Marquardt implementation: `minpack` (the crate; trains the committed model) or
+    /// `trainlm` (MATLAB's normal equations; far faster for nets of hundreds of parameters).
+    #[arg(long, value_enum, default_value = "minpack")]
+    solver: Solver,
+}
+
+impl Common {
+    fn options(&self, hidden: Vec<usize>, activation: Activation) -> Result<TrainOptions> {
+        if !(self.reg.is_finite() && (0.0..=1.0).contains(&self.reg)) {
+            bail!("--reg must be a finite number in [0, 1], got {}", self.reg);
+        }
+        Ok(TrainOptions {
+            hidden,
+            activation,
+            inputs: self.inputs,
+            target: self.target,
+            regularisation: self.reg,
+            max_epochs: self.max_epochs as usize,
+            patience: self.patience as usize,
+            seed: self.seed,
+            restarts: self.restarts as usize,
+            solver: self.solver,
+        })
+    }
+}
+
+#[derive(Args)]
+struct TrainOne {
+    /// Dataset file (`bearing dataset generate`).
+    #[arg(long, required = true)]
+    data: Option<PathBuf>,
+    /// Hidden layers as `LxN` (e.g. `3x14`) or widths `14-14-10` (1–8 layers of 1–64).
+    #[arg(long, default_value = "2x14")]
+    arch: String,
+    /// Hidden activation.
+    #[arg(long, value_enum, default_value = "tanh")]
+    act: Activation,
+    /// Integer weight precision stored in the model (8 or 16).
+    #[arg(long, default_value_t = 16)]
+    weight_bits: u32,
+    /// Model file to write.
+    #[arg(long, required = true)]
+    out: Option<PathBuf>,
+    /// Print the test report as JSON.
+    #[arg(long)]
+    json: bool,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Args)]
+struct SweepArgs {
+    /// Dataset file.
+    #[arg(long)]
+    data: PathBuf,
+    /// CI subset (1–2 layers × {10, 14} × tanh/ReLU × 600 samples, ≤ 100 epochs); without it
+    /// the full published grid (1–4 layers × {10, 15, 20} × tanh/logistic/ReLU ×
+    /// {600, 1000, 2000, 5000} samples).
+    #[arg(long)]
+    quick: bool,
+    /// Comma-separated sample counts (overrides the grid's).
+    #[arg(long, value_delimiter = ',')]
+    samples: Option<Vec<usize>>,
+    /// Comma-separated layer counts (overrides the grid's).
+    #[arg(long, value_delimiter = ',')]
+    layers: Option<Vec<usize>>,
+    /// Comma-separated neuron counts (overrides the grid's).
+    #[arg(long, value_delimiter = ',')]
+    neurons: Option<Vec<usize>>,
+    /// Markdown table output.
+    #[arg(long, default_value = "sweep.md")]
+    out_md: PathBuf,
+    /// JSON output.
+    #[arg(long, default_value = "sweep.json")]
+    out_json: PathBuf,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Args)]
+struct EvaluateArgs {
+    /// Model file (must be the one compiled into the core).
+    #[arg(long)]
+    model: PathBuf,
+    /// Dataset file the model was trained on.
+    #[arg(long)]
+    data: PathBuf,
+    /// Store the figures in the model file.
+    #[arg(long)]
+    write: bool,
+}
+
+/// Parse `LxN` or `a-b-c`.
+fn parse_arch(arch: &str) -> Result<Vec<usize>> {
+    let widths: Vec<usize> = if let Some((l, n)) = arch.split_once('x') {
+        let l: usize = l
+            .trim()
+            .parse()
+            .with_context(|| format!("--arch {arch}: layer count"))?;
+        let n: usize = n
+            .trim()
+            .parse()
+            .with_context(|| format!("--arch {arch}: neuron count"))?;
+        vec![n; l]
+    } else {
+        arch.split('-')
+            .map(|w| w.trim().parse::<usize>())
+            .collect::<Result<_, _>>()
+            .with_context(|| format!("--arch {arch}: expected LxN or widths like 14-14"))?
+    };
+    if widths.is_empty() || widths.len() > 8 || widths.iter().any(|w| !(1..=64).contains(w)) {
+        bail!("--arch {arch}: 1–8 hidden layers of 1–64 neurons allowed");
+    }
+    Ok(widths)
+}
+
+/// Run `bearing train`.
+pub fn run(args: TrainArgs) -> Result<()> {
+    match args.command {
+        Some(TrainCommand::Sweep(s)) => sweep(s),
+        Some(TrainCommand::Evaluate(e)) => evaluate(e),
+        None => train_one(args.train),
+    }
+}
+
+fn print_metrics(name: &str, m: &Metrics) {
+    for (film, e) in [("h_c", &m.central), ("h_min", &m.minimum)] {
+        println!(
+            "{name:<26} {film:<6} R² {:.6}  R²(ln) {:.6}  |rel| median {:.3} %  p90 {:.3} %  p99 {:.3} %  max {:.3} %",
+            e.r2, e.r2_log, e.median_pct, e.p90_pct, e.p99_pct, e.max_pct
+        );
+    }
+}
+
+fn train_one(args: TrainOne) -> Result<()> {
+    let (Some(data_path), Some(out)) = (args.data, args.out) else {
+        bail!("--data and --out are required")
+    };
+    let hidden = parse_arch(&args.arch)?;
+    let options = args.common.options(hidden, args.act)?;
+    if !(args.weight_bits == 8 || args.weight_bits == 16) {
+        bail!("--weight-bits must be 8 or 16, got {}", args.weight_bits);
+    }
+    let (data, samples) = load_samples(&data_path)?;
+    let command = std::env::args().collect::<Vec<_>>().join(" ");
+    eprintln!("training {} on {} solved cases …", args.arch, samples.len());
+    let model = train_model(
+        &data_path.display().to_string(),
+        &data,
+        &samples,
+        &options,
+        args.weight_bits,
+        command,
+    )?;
+    model.save(&out)?;
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&model.test)?);
+    } else {
+        let t = &model.trained;
+        println!(
+            "{}: {} epochs, validation MSE {:.3e}, {:.1} s",
+            out.display(),
+            t.epochs,
+            t.validation_mse,
+            t.train_seconds
+        );
+        println!("test set ({} cases):", model.test.sizes[2]);
+        print_metrics("network f64", &model.test.network_f64);
+        print_metrics(
+            &format!("network int{}", args.weight_bits),
+            &model.test.network_int,
+        );
+        for (bits, m) in &model.test.int_vs_f64 {
+            print_metrics(&format!("int{bits} vs f64"), m);
+        }
+        print_metrics("regression (DT / DH)", &model.test.regression);
+    }
+    Ok(())
+}
+
+fn sweep(args: SweepArgs) -> Result<()> {
+    let base = args.common.options(vec![], Activation::Tanh)?;
+    let mut config = if args.quick {
+        SweepConfig::quick(base)
+    } else {
+        SweepConfig::full(base)
+    };
+    if let Some(s) = args.samples {
+        config.sample_sizes = s;
+    }
+    if let Some(l) = args.layers {
+        config.layers = l;
+    }
+    if let Some(n) = args.neurons {
+        config.neurons = n;
+    }
+    if config.layers.iter().any(|l| !(1..=8).contains(l))
+        || config.neurons.iter().any(|n| !(1..=64).contains(n))
+    {
+        bail!("--layers must be 1–8 and --neurons 1–64");
+    }
+    let (_, samples) = load_samples(&args.data)?;
+    let rows = run_sweep(&samples, &config, true);
+    if rows.is_empty() {
+        bail!(
+            "no sweep row: every --samples value exceeds the {} solved records",
+            samples.len()
+        );
+    }
+    let md = format!(
+        "{}\n{}",
+        heading(&config, &args.data.display().to_string()),
+        markdown(&rows)
+    );
+    std::fs::write(&args.out_md, &md)
+        .with_context(|| format!("writing {}", args.out_md.display()))?;
+    std::fs::write(
+        &args.out_json,
+        serde_json::to_string_pretty(&serde_json::json!({"config": config, "rows": rows}))?,
+    )
+    .with_context(|| format!("writing {}", args.out_json.display()))?;
+    print!("{md}");
+    Ok(())
+}
+
+fn evaluate(args: EvaluateArgs) -> Result<()> {
+    let mut model = ModelFile::load(&args.model)?;
+    let fp = fingerprint(&model)?;
+    if fp != ann::model_weights::MODEL_FINGERPRINT {
+        bail!(
+            "{} (fingerprint {fp}) is not the model compiled into the core ({}); run `bearing export` and rebuild",
+            args.model.display(),
+            ann::model_weights::MODEL_FINGERPRINT
+        );
+    }
+    let (_, samples) = load_samples(&args.data)?;
+    let (_, _, test) = split_samples(&samples, model.trained.options.seed);
+    let mut f32_pred = Vec::new();
+    let mut int_pred = Vec::new();
+    let mut fallbacks = 0;
+    for c in &test.cases {
+        let input = c.to_core();
+        let a = ann::AnnF32.film(&input);
+        let b = ann::AnnInt.film(&input);
+        fallbacks += usize::from(a.source == FilmSource::Fallback);
+        f32_pred.push((f64::from(a.central_m), f64::from(a.minimum_m)));
+        int_pred.push((f64::from(b.central_m), f64::from(b.minimum_m)));
+    }
+    let report = CoreReport {
+        ann_f32: Metrics::of(&f32_pred, &test.films),
+        ann_int: Metrics::of(&int_pred, &test.films),
+        int_vs_f32: Metrics::of(&int_pred, &f32_pred),
+        fallbacks,
+    };
+    println!(
+        "core models on the test set ({} cases, {} sent to the fallback):",
+        test.len(),
+        fallbacks
+    );
+    print_metrics("AnnF32", &report.ann_f32);
+    print_metrics("AnnInt", &report.ann_int);
+    print_metrics("AnnInt vs AnnF32", &report.int_vs_f32);
+    print_metrics("regression (DT / DH)", &model.test.regression);
+    if args.write {
+        model.test.core = Some(report);
+        model.save(&args.model)?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_arch;
+
+    /// `LxN` and width lists parse; zero, too many or too wide layers and junk are refused.
+    #[test]
+    fn arch_parsing() {
+        assert_eq!(parse_arch("3x14").unwrap(), vec![14, 14, 14]);
+        assert_eq!(parse_arch("14-10").unwrap(), vec![14, 10]);
+        for bad in ["0x5", "2x0", "9x5", "2x65", "abc", "", "3x", "-4"] {
+            assert!(parse_arch(bad).is_err(), "{bad}");
+        }
+    }
+}

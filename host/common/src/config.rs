@@ -1,0 +1,314 @@
+//! Bearing configuration files (TOML): geometry, material, lubricant, model options and a
+//! default operating case.
+//!
+//! Keys carry their SI unit (`pitch_diameter_m`). Every error names the file, the line and the
+//! field: syntax and type errors come from the TOML parser with its location; values that the
+//! core refuses (NaN, ≤ 0, D ≥ d_m, …) are traced back to the line of their key.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use bearing_core::{
+    BearingGeometry, BearingParams, ContactLaw, Crown, Lubricant, Material, ParamError,
+};
+use serde::{Deserialize, Serialize};
+
+use crate::toml_lines::{self, TomlLines};
+
+/// A bearing configuration as written in the file.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct BearingConfig {
+    /// Human-readable name.
+    pub name: String,
+    /// Geometry.
+    pub geometry: GeometryConfig,
+    /// Material of rings and rollers (both the same).
+    pub material: MaterialConfig,
+    /// Lubricant.
+    pub lubricant: LubricantConfig,
+    /// Model options.
+    #[serde(default)]
+    pub model: ModelConfig,
+    /// Default operating case for the CLI.
+    #[serde(default)]
+    pub case: CaseConfig,
+}
+
+/// `[geometry]`.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct GeometryConfig {
+    /// d_m (m).
+    pub pitch_diameter_m: f32,
+    /// D (m).
+    pub roller_diameter_m: f32,
+    /// Effective contact length l (m).
+    pub roller_length_m: f32,
+    /// Z.
+    pub roller_count: u16,
+    /// Radial clearance g_r per roller (m; negative = interference).
+    pub radial_clearance_m: f32,
+    /// Multiplier on the ISO/TS 16281 logarithmic crown (0 = straight roller).
+    #[serde(default)]
+    pub crown_scale: f32,
+}
+
+/// `[material]`.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialConfig {
+    /// E (Pa).
+    pub elastic_modulus_pa: f32,
+    /// ν (–).
+    pub poisson_ratio: f32,
+}
+
+/// `[lubricant]`.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct LubricantConfig {
+    /// η₀ (Pa·s).
+    pub viscosity_pa_s: f32,
+    /// α (1/Pa).
+    pub pressure_viscosity_pa_inv: f32,
+    /// ρ₀ (kg/m³).
+    pub density_kg_m3: f32,
+}
+
+/// `[model]`.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ModelConfig {
+    /// `"palmgren"` (default) or `"lundberg"`.
+    #[serde(default = "default_law")]
+    pub contact_law: String,
+    /// f_damp (s).
+    #[serde(default = "default_damping")]
+    pub damping_factor_s: f32,
+}
+
+fn default_law() -> String {
+    "palmgren".into()
+}
+fn default_damping() -> f32 {
+    1.0e-5
+}
+
+impl Default for ModelConfig {
+    fn default() -> Self {
+        Self {
+            contact_law: default_law(),
+            damping_factor_s: default_damping(),
+        }
+    }
+}
+
+/// `[case]`: defaults for the CLI.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct CaseConfig {
+    /// Radial load on the inner race (N).
+    pub radial_load_n: Option<f32>,
+    /// Shaft speed (rpm).
+    pub speed_rpm: Option<f32>,
+}
+
+/// A configuration that could not be read or was refused.
+#[derive(Debug)]
+pub struct ConfigError {
+    /// The file.
+    pub path: PathBuf,
+    /// 1-based line, when known.
+    pub line: Option<usize>,
+    /// The field, when known.
+    pub field: Option<String>,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl fmt::Display for ConfigError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.path.display())?;
+        if let Some(line) = self.line {
+            write!(f, ":{line}")?;
+        }
+        if let Some(field) = &self.field {
+            write!(f, ": field `{field}`")?;
+        }
+        write!(f, ": {}", self.message)
+    }
+}
+
+impl std::error::Error for ConfigError {}
+
+impl BearingConfig {
+    /// Read and validate a configuration file.
+    pub fn load(path: &Path) -> Result<(Self, BearingParams), ConfigError> {
+        let text = std::fs::read_to_string(path).map_err(|e| ConfigError {
+            path: path.to_owned(),
+            line: None,
+            field: None,
+            message: format!("cannot read: {e}"),
+        })?;
+        Self::parse(&text, path)
+    }
+
+    /// Parse and validate configuration `text`; `path` is only used in errors.
+    pub fn parse(text: &str, path: &Path) -> Result<(Self, BearingParams), ConfigError> {
+        let config: BearingConfig = toml::from_str(text).map_err(|e| {
+            let line = e.span().map(|s| toml_lines::line_at(text, s.start));
+            ConfigError {
+                path: path.to_owned(),
+                line,
+                field: None,
+                message: e.message().trim().to_owned(),
+            }
+        })?;
+        let params = config.params().map_err(|e| ConfigError {
+            path: path.to_owned(),
+            line: TomlLines::new(text).line_of_key(e.field),
+            field: Some(e.field.to_owned()),
+            message: e.to_string(),
+        })?;
+        Ok((config, params))
+    }
+
+    /// The core parameters.
+    pub fn params(&self) -> Result<BearingParams, ParamError> {
+        let g = &self.geometry;
+        let crown = if g.crown_scale == 0.0 {
+            Crown::None
+        } else {
+            Crown::Logarithmic {
+                scale: g.crown_scale,
+            }
+        };
+        let geometry = BearingGeometry::new(
+            g.pitch_diameter_m,
+            g.roller_diameter_m,
+            g.roller_length_m,
+            g.roller_count,
+            crown,
+            g.radial_clearance_m,
+        )?;
+        let material = Material::new(
+            self.material.elastic_modulus_pa,
+            self.material.poisson_ratio,
+        )?;
+        let l = &self.lubricant;
+        let lubricant = Lubricant::new(
+            l.viscosity_pa_s,
+            l.pressure_viscosity_pa_inv,
+            l.density_kg_m3,
+        )?;
+        let law = match self.model.contact_law.as_str() {
+            "palmgren" => ContactLaw::Palmgren,
+            "lundberg" => ContactLaw::Lundberg,
+            _ => {
+                return Err(ParamError {
+                    field: "contact_law",
+                    value: f32::NAN,
+                    allowed: bearing_core::Allowed::Finite,
+                })
+            }
+        };
+        if let Some(v) = self.case.radial_load_n {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(ParamError {
+                    field: "radial_load_n",
+                    value: v,
+                    allowed: bearing_core::Allowed::Range {
+                        min: 0.0,
+                        max: f32::MAX,
+                    },
+                });
+            }
+        }
+        if let Some(v) = self.case.speed_rpm {
+            if !v.is_finite() || v.abs() > 900_000.0 {
+                return Err(ParamError {
+                    field: "speed_rpm",
+                    value: v,
+                    allowed: bearing_core::Allowed::Range {
+                        min: -900_000.0,
+                        max: 900_000.0,
+                    },
+                });
+            }
+        }
+        BearingParams::new(
+            geometry,
+            material,
+            material,
+            lubricant,
+            law,
+            self.model.damping_factor_s,
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn bundled(name: &str) -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../configs")
+            .join(name)
+    }
+
+    #[test]
+    fn bundled_configs_load() {
+        for name in ["hub_motor.toml", "nu205.toml", "static_check.toml"] {
+            let (c, p) = BearingConfig::load(&bundled(name)).unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(p.geometry().roller_count(), c.geometry.roller_count);
+        }
+    }
+
+    #[test]
+    fn refused_value_names_file_line_and_field() {
+        let text = std::fs::read_to_string(bundled("hub_motor.toml")).unwrap();
+        let bad = text.replace("roller_diameter_m = 0.0088", "roller_diameter_m = 0.07");
+        let e = BearingConfig::parse(&bad, Path::new("bad.toml")).unwrap_err();
+        let expected_line = bad
+            .lines()
+            .position(|l| l.starts_with("roller_diameter_m"))
+            .unwrap()
+            + 1;
+        assert_eq!(e.line, Some(expected_line));
+        assert_eq!(e.field.as_deref(), Some("roller_diameter_m"));
+        let shown = e.to_string();
+        assert!(
+            shown.starts_with(&format!(
+                "bad.toml:{expected_line}: field `roller_diameter_m`"
+            )),
+            "{shown}"
+        );
+        assert!(shown.contains("pitch_diameter_m"), "{shown}");
+    }
+
+    #[test]
+    fn syntax_and_unknown_fields_are_located() {
+        let e = BearingConfig::parse(
+            "name = \"x\"\n[geometry]\npitch_diameter_m = \"a\"\n",
+            Path::new("s.toml"),
+        )
+        .unwrap_err();
+        assert_eq!(e.line, Some(3), "{e}");
+        let text = std::fs::read_to_string(bundled("nu205.toml")).unwrap();
+        let bad = text.replace("roller_count = 12", "roller_count = 12\nroller_colour = 3");
+        let e = BearingConfig::parse(&bad, Path::new("u.toml")).unwrap_err();
+        assert!(e.to_string().contains("roller_colour"), "{e}");
+        // The unknown key starts its line: the error points at that line, not the one before.
+        let expected = bad
+            .lines()
+            .position(|l| l.starts_with("roller_colour"))
+            .unwrap()
+            + 1;
+        assert_eq!(e.line, Some(expected), "{e}");
+        let nan = text.replace("viscosity_pa_s = 0.08", "viscosity_pa_s = nan");
+        let e = BearingConfig::parse(&nan, Path::new("n.toml")).unwrap_err();
+        assert_eq!(e.field.as_deref(), Some("viscosity_pa_s"), "{e}");
+    }
+}

@@ -1,0 +1,182 @@
+//! The shaft TOML loader: the bundled Friswell file reproduces the published frequencies, and
+//! hostile input gives errors naming file, line, field and the allowed range.
+
+use std::path::{Path, PathBuf};
+
+use crate::config::{load_model, parse_model};
+use crate::operating::operating_modes;
+
+fn configs() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs")
+}
+
+/// Reference: Friswell et al. (2010) Example 5.9.1 at 4000 rpm (85.39, 87.80, 251.78, 294.71,
+/// 600.18 rad/s), through the bundled configs/friswell_5_9_1.toml and the operating-point path.
+#[test]
+fn bundled_friswell_file_gives_published_frequencies() {
+    let model = load_model(&configs().join("friswell_5_9_1.toml")).unwrap();
+    let (_, modes) =
+        operating_modes(&model, 4000.0 * std::f64::consts::PI / 30.0, 5, false).unwrap();
+    for (m, p) in modes.iter().zip([85.39, 87.80, 251.78, 294.71, 600.18]) {
+        assert!(
+            (m.frequency - p).abs() / p < 0.005,
+            "{} vs {p}",
+            m.frequency
+        );
+    }
+}
+
+/// Every bundled shaft file parses.
+#[test]
+fn bundled_shaft_files_parse() {
+    for name in [
+        "friswell_5_9_1.toml",
+        "shaft_hub_motor.toml",
+        "shaft_nu205_rig.toml",
+    ] {
+        let model = load_model(&configs().join(name));
+        assert!(
+            model.is_ok(),
+            "{name}: {}",
+            model.err().map(|e| e.to_string()).unwrap_or_default()
+        );
+    }
+}
+
+const GOOD: &str = r#"nodes_m = [0.0, 0.5, 1.0]
+[material]
+youngs_modulus_pa = 211e9
+shear_modulus_pa = 81.2e9
+density_kg_m3 = 7810.0
+[[section]]
+from_node = 0
+to_node = 2
+outer_diameter_m = 0.05
+[[bearing]]
+node = 0
+kind = "linear"
+stiffness_n_per_m = 1e6
+"#;
+
+fn error_of(text: &str) -> String {
+    parse_model(Path::new("x/shaft.toml"), text)
+        .unwrap_err()
+        .to_string()
+}
+
+#[test]
+fn good_text_parses() {
+    assert!(parse_model(Path::new("x/shaft.toml"), GOOD).is_ok());
+}
+
+#[test]
+fn negative_nan_and_infinite_values_are_refused_with_location() {
+    for bad in ["-0.05", "nan", "inf", "0.0"] {
+        let text = GOOD.replace(
+            "outer_diameter_m = 0.05",
+            &format!("outer_diameter_m = {bad}"),
+        );
+        let e = error_of(&text);
+        assert!(
+            e.starts_with("x/shaft.toml:9: section[0].outer_diameter_m:"),
+            "{e}"
+        );
+        assert!(e.contains("must be finite and in (0"), "{e}");
+    }
+}
+
+#[test]
+fn node_out_of_range_names_the_bearing() {
+    let e = error_of(&GOOD.replace("node = 0\nkind", "node = 7\nkind"));
+    assert!(e.starts_with("x/shaft.toml:11: bearing[0].node:"), "{e}");
+    assert!(e.contains("allowed 0 … 2"), "{e}");
+}
+
+#[test]
+fn unknown_bearing_kind_lists_the_allowed_ones() {
+    let e = error_of(&GOOD.replace("\"linear\"", "\"magnetic\""));
+    assert!(
+        e.contains("bearing[0].kind") && e.contains("\"linear\", \"roller\""),
+        "{e}"
+    );
+}
+
+#[test]
+fn syntax_and_unknown_field_errors_carry_the_line() {
+    let e = error_of(&GOOD.replace("density_kg_m3 = 7810.0", "density_kg_m3 = = 7810.0"));
+    assert!(e.starts_with("x/shaft.toml:5:"), "{e}");
+    let e = error_of(&GOOD.replace("stiffness_n_per_m", "stifness_n_per_m"));
+    assert!(
+        e.starts_with("x/shaft.toml:13:") && e.contains("stifness_n_per_m"),
+        "{e}"
+    );
+}
+
+#[test]
+fn uncovered_elements_and_decreasing_nodes_are_refused() {
+    let e = error_of(&GOOD.replace("to_node = 2", "to_node = 1"));
+    assert!(e.contains("no section"), "{e}");
+    let e = error_of(&GOOD.replace("[0.0, 0.5, 1.0]", "[0.0, 0.5, 0.4]"));
+    assert!(
+        e.starts_with("x/shaft.toml:1: nodes_m:") && e.contains("increase"),
+        "{e}"
+    );
+}
+
+#[test]
+fn roller_bearing_path_is_relative_to_the_shaft_file() {
+    let text = GOOD.replace(
+        "kind = \"linear\"\nstiffness_n_per_m = 1e6",
+        "kind = \"roller\"\nconfig = \"hub_motor.toml\"\nfilm = \"regression\"",
+    );
+    let model = parse_model(Path::new("x/shaft.toml"), &text).unwrap();
+    let spec = &model.description.bearings[0].spec;
+    match spec {
+        crate::bearing::BearingSpec::Roller { config, .. } => {
+            assert_eq!(config, &Path::new("x").join("hub_motor.toml"))
+        }
+        other => panic!("{other:?}"),
+    }
+    let e = spec.build().err().unwrap().to_string();
+    assert!(
+        e.contains("x/hub_motor.toml") && e.contains("cannot read"),
+        "{e}"
+    );
+}
+
+/// The bundled bearing file builds a core bearing with every film model; the integer and the
+/// f32 network (the same trained net, quantised or not: ≤ 0.03 % apart on the test set) give
+/// nearly the same bearing force, and both differ from the dry bearing.
+#[test]
+fn roller_bearing_films() {
+    use crate::bearing::{roller_bearing, BearingState, FilmChoice};
+    let path = configs().join("hub_motor.toml");
+    let state = BearingState {
+        displacement: [0.0, -8.0e-6],
+        velocity: [0.0; 2],
+        spin_speed: 12_000.0 * std::f64::consts::PI / 30.0,
+        time: 0.0,
+    };
+    let force = |film| {
+        let mut b = roller_bearing(&path, film).unwrap();
+        let mut f = [0.0; 2];
+        for _ in 0..8 {
+            f = b.evaluate(&state).unwrap().force;
+        }
+        f[1]
+    };
+    let (int, f32_net, dry) = (
+        force(FilmChoice::Int),
+        force(FilmChoice::F32),
+        force(FilmChoice::Dry),
+    );
+    assert!(roller_bearing(&path, FilmChoice::Regression).is_ok());
+    assert!(
+        (int / f32_net - 1.0).abs() < 5e-3,
+        "int {int} N vs f32 {f32_net} N"
+    );
+    assert!(
+        (int / dry - 1.0).abs() > 0.05,
+        "network {int} N vs dry {dry} N"
+    );
+}
