@@ -86,7 +86,7 @@ fn firmware_replay_matches_the_host_bit_for_bit_and_counts_deterministically() {
     let profiled = first
         .profile
         .iter()
-        .find(|e| e.item.starts_with("Bearing::step regression"))
+        .find(|e| e.item.starts_with("Bearing::advance regression"))
         .map(|e| f64::from(e.instructions))
         .unwrap();
     let replayed = f64::from(first.instructions_per_step.median);

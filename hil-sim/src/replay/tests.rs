@@ -246,7 +246,7 @@ fn exact_reference_passes_and_the_dry_model_is_worse() {
     assert_eq!(run.step_times_ns.len(), 500);
     assert_eq!(run.points.len(), 500_usize.div_ceil(7));
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, stepper.name(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, stepper.name(), &cfg, &run).unwrap();
     assert!(report.film_contacts_compared > 0);
     // f32 against f64 of the same formulas: rounding only.
     assert!(report.film_rel_err_p99.unwrap() < 1e-5, "{report:?}");
@@ -315,7 +315,7 @@ fn a_film_off_by_five_percent_fails_accuracy_with_the_reason() {
     )
     .unwrap();
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     assert!(
         (report.film_rel_err_p99.unwrap() - 0.05).abs() < 1e-5,
         "{report:?}"
@@ -337,7 +337,7 @@ fn without_reference_accuracy_is_not_checked() {
     let cfg = config(0, false, 10_000.0);
     let run = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap();
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     assert_eq!(report.accuracy_ok, None);
     assert_eq!(report.film_rel_err_p99, None);
 }
@@ -433,7 +433,7 @@ fn realtime_scheduling_covers_the_timed_loop_only() {
         Ok(run) => {
             assert_eq!(run.realtime, Some(request));
             let report =
-                ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run)
+                ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run)
                     .unwrap();
             assert_eq!(report.realtime, Some(request));
             assert!(report
@@ -483,7 +483,7 @@ fn refused_realtime_falls_back_when_asked() {
     let reason = run.realtime_refused.clone().unwrap();
     assert!(reason.contains("does not exist"), "{reason}");
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     assert_eq!(report.realtime_refused.as_deref(), Some(reason.as_str()));
     assert!(report.markdown().contains(&format!(
         "ordinary scheduling policy (real-time scheduling refused: {reason})"
@@ -522,20 +522,14 @@ fn warm_up_steps_a_second_stepper_only() {
     assert_eq!(with.outputs, without.outputs);
     assert_eq!(without.cold_step_ns, None);
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &with).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &with).unwrap();
     assert_eq!(report.cold_step_ns, with.cold_step_ns);
     assert!(report.cold_step_ns.is_some());
     assert!(report.markdown().contains(&format!(
         "Warm-up: a second stepper took {WARM_UP_STEPS} untimed steps"
     )));
-    let no_warm_up = ReplayReport::build(
-        &trace.meta,
-        FilmChoice::Int,
-        "double".into(),
-        &cfg,
-        &without,
-    )
-    .unwrap();
+    let no_warm_up =
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &without).unwrap();
     assert!(!no_warm_up.markdown().contains("Warm-up"));
 }
 
@@ -560,7 +554,7 @@ fn pause_probe_reaches_the_report() {
     let probe = run.pauses.clone().unwrap();
     assert!(probe.duration_ns >= 20_000_000);
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     let env = report.environment.unwrap();
     assert_eq!(env.threshold_ns, super::pauses::MIN_PAUSE_NS);
     assert_eq!(env.pauses, probe.gaps_ns.len());
@@ -581,7 +575,7 @@ fn pause_probe_reaches_the_report() {
     let run = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap();
     assert_eq!(run.pauses, None);
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     assert_eq!(report.environment, None);
     assert!(!report.markdown().contains("Machine pauses"));
 }

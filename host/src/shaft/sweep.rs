@@ -4,7 +4,7 @@
 
 use rayon::prelude::*;
 
-use super::bearing::{BearingSpec, FilmChoice};
+use super::bearing::{BearingSpec, FilmKind};
 use super::model::RotorModel;
 use super::operating::{operating_modes, OperatingError};
 use super::simulate::{run, Envelope, RunError, RunResult, RunSettings};
@@ -77,13 +77,13 @@ pub fn natural_frequencies_hz(
 }
 
 /// Runs the sweep. `lubricated_film` replaces the film of every roller bearing on the lubricated
-/// side (None keeps each bearing's configured film); the dry side uses `FilmChoice::Dry`.
+/// side (None keeps each bearing's configured film); the dry side uses `FilmKind::Dry`.
 /// `progress` is called once per finished run.
 pub fn sweep(
     model: &RotorModel,
     speeds_rpm: &[f64],
     settings_at: &SettingsAt<'_>,
-    lubricated_film: Option<FilmChoice>,
+    lubricated_film: Option<FilmKind>,
     progress: &(dyn Fn() + Sync),
 ) -> Result<Vec<SweepPoint>, RunError> {
     let specs: Vec<BearingSpec> = model
@@ -95,7 +95,7 @@ pub fn sweep(
             None => b.spec.clone(),
         })
         .collect();
-    let dry: Vec<BearingSpec> = specs.iter().map(|s| s.with_film(FilmChoice::Dry)).collect();
+    let dry: Vec<BearingSpec> = specs.iter().map(|s| s.with_film(FilmKind::Dry)).collect();
     speeds_rpm
         .par_iter()
         .map(|&rpm| {

@@ -41,7 +41,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
-use super::bearing::FilmChoice;
+use super::bearing::FilmKind;
 use super::model::RotorModel;
 
 mod describe;
@@ -119,7 +119,7 @@ pub(super) struct FileBearing {
     pub(super) cxx_n_s_per_m: Option<f64>,
     pub(super) cyy_n_s_per_m: Option<f64>,
     pub(super) config: Option<String>,
-    pub(super) film: Option<FilmChoice>,
+    pub(super) film: Option<FilmKind>,
 }
 
 #[derive(Debug, Deserialize)]
