@@ -272,7 +272,9 @@ impl FilmTable {
     /// turns the next node of the loaded range `loaded` (ln Q, widened by a margin) for the
     /// inner and the outer contact, then the next node of the whole table for each. Round
     /// robin renews the node computed longest ago, so at the speed farthest from this step's;
-    /// the cost is fixed.
+    /// the cost is fixed. Inlined into the step, as the renewal was before it became a function
+    /// of its own (a call costs the M4 ≈ 100 instructions of spills with the integer network).
+    #[inline(always)]
     pub(crate) fn renew_nodes<F: FilmModel + ?Sized>(
         &mut self,
         model: &F,
@@ -324,6 +326,7 @@ impl FilmTable {
 
     /// The table as a step's film law at speed scale u^κ = `speed_scale` (its inverse
     /// `inv_speed_scale`) with Martin coefficients `martin` (inner, outer).
+    #[inline(always)]
     pub(crate) fn films(
         &self,
         speed_scale: f32,

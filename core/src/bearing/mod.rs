@@ -375,7 +375,10 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     /// The film model is called at `REFRESHES_PER_STEP` node(s) of the bearing's film table
     /// (`film_table`: by turns the next node of the loaded range or of the whole table, for
     /// one contact kind) by a committing pass, so every step costs the same; a trial reads the
-    /// table as committed.
+    /// table as committed. Inlined into `run` for every film model: as a call, the integer
+    /// network's step cost the M4 ≈ 90 instructions more (28 244 against 28 152 per replayed
+    /// hub-motor step).
+    #[inline(always)]
     fn lubricated<F: FilmModel>(
         &mut self,
         film: &F,
