@@ -6,7 +6,7 @@
 //! their results are bit-identical on the host and on the Cortex-M4F (no fused operations).
 //! Accuracy (checked in the tests against f64): a few ulp over the whole positive range.
 //!
-//! The film network has its own logarithm and exponentials, by series ([`series`]): they
+//! The film network has its own logarithm and exponentials, by series (`series`): they
 //! round differently from these, and each family's bits are pinned by its users (see there).
 
 use crate::lanes::Real;
@@ -67,7 +67,7 @@ fn horner<T: Real, const N: usize>(c: &[f32; N], x: T) -> T {
 /// n = t − 1.5·2²³ exactly, and `(bits(t) − bits(1.5·2²³) + 127) << 23` is the pattern of 2ⁿ
 /// (biased exponent n + 127, zero mantissa). No float-to-integer conversion: Rust's `as i32`
 /// saturates, which costs a compare chain around `cvttss2si` on x86 and keeps SIMD lanes
-/// from forming. Shared by [`exp`]/[`exp2`] and the network's ([`series`]).
+/// from forming. Shared by [`exp`]/[`exp2`] and the network's (`series`).
 #[inline(always)]
 pub(crate) fn round_with_pow2(x: f32) -> (f32, f32) {
     let shifted = x + ROUNDER;
