@@ -1,4 +1,4 @@
-//! EHL solver speed over a fixed set of Latin-hypercube samples of the PHYSICS.md §5.3 domain
+//! EHL solver speed over a fixed set of Latin-hypercube samples of the docs/physics.md §5.3 domain
 //! (100 samples, p_h 0.3–3.5 GPa, seed 5). Besides criterion's timing of one case, it prints the
 //! per-solution distribution (median, p95, max) of one pass — the figure the issue asks for
 //! (goal: median ≤ 20 ms per solution on one core; published solvers: ≈ 5 s finite differences,

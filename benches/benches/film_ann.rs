@@ -12,7 +12,7 @@ use bearing_core::film::ann::{prepare, AnnF32, AnnInt};
 use bearing_core::film::{ContactInput, FilmModel};
 use criterion::{criterion_group, criterion_main, Criterion};
 
-/// PHYSICS.md §6.3: 850 N on 15 mm, 9.83 m/s, R = 3.03 mm, E' = 239.6 GPa, α = 21 GPa⁻¹, η₀ = 0.08 Pa·s.
+/// docs/physics.md §6.3: 850 N on 15 mm, 9.83 m/s, R = 3.03 mm, E' = 239.6 GPa, α = 21 GPa⁻¹, η₀ = 0.08 Pa·s.
 const CONTACT: ContactInput = ContactInput {
     load_n: 850.0,
     length_m: 15e-3,

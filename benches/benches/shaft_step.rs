@@ -14,7 +14,7 @@
 
 use std::path::Path;
 
-use bearing_shaft::bearing::{BearingSpec, BearingState, FilmChoice, LinearBearing};
+use bearing_shaft::bearing::{BearingSpec, BearingState, FilmKind, LinearBearing};
 use bearing_shaft::config::load_model;
 use bearing_shaft::integrator::{Integrator, NewtonSettings, Scheme};
 use bearing_shaft::model::RotorModel;
@@ -24,7 +24,7 @@ use bearing_shaft::system::TimeSystem;
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::DVector;
 
-fn with_film(model: &RotorModel, film: FilmChoice) -> RotorModel {
+fn with_film(model: &RotorModel, film: FilmKind) -> RotorModel {
     let mut m = model.clone();
     for b in &mut m.description.bearings {
         b.spec = b.spec.with_film(film);
@@ -60,12 +60,12 @@ fn shaft_step(c: &mut Criterion) {
     let dt = 2.0 * std::f64::consts::PI / (20.0 * 17.0 * omega);
     let cases = [
         ("linear", linear),
-        ("roller_dry", with_film(&roller, FilmChoice::Dry)),
+        ("roller_dry", with_film(&roller, FilmKind::Dry)),
         (
             "roller_regression",
-            with_film(&roller, FilmChoice::Regression),
+            with_film(&roller, FilmKind::Regression),
         ),
-        ("roller_int", with_film(&roller, FilmChoice::Int)),
+        ("roller_int", with_film(&roller, FilmKind::Int)),
     ];
     let mut group = c.benchmark_group("shaft_step");
     for (label, model) in &cases {
@@ -109,7 +109,7 @@ fn shaft_step(c: &mut Criterion) {
     }
     // One evaluation of one roller bearing at the equilibrium state (the Newton loop calls it
     // once per iteration per bearing).
-    for film in [FilmChoice::Dry, FilmChoice::Regression, FilmChoice::Int] {
+    for film in [FilmKind::Dry, FilmKind::Regression, FilmKind::Int] {
         let model = with_film(&roller, film);
         let eq = equilibrium(&model, omega, &mut build_bearings(&model).unwrap()).unwrap();
         let d = model.bearing_dofs()[0];

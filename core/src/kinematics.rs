@@ -1,4 +1,4 @@
-//! Kinematics of a cylindrical roller bearing with a fixed outer ring (PHYSICS.md §2).
+//! Kinematics of a cylindrical roller bearing with a fixed outer ring (docs/physics.md §2).
 //!
 //! Pure rolling is assumed: the cage turns at ω_c = (ω/2)(1 − γ) and both contacts see the
 //! same entrainment speed u_m = (d_m/4)(1 − γ²)ω, γ = D/d_m.
@@ -82,7 +82,7 @@ mod tests {
     use crate::params::{BearingGeometry, Crown};
 
     fn nu205() -> BearingGeometry {
-        // PHYSICS.md §6.1: raceways Ø31.5 / Ø46.5 mm → d_m = 39 mm, D = 7.5 mm, 12 rollers.
+        // docs/physics.md §6.1: raceways Ø31.5 / Ø46.5 mm → d_m = 39 mm, D = 7.5 mm, 12 rollers.
         BearingGeometry::new(0.039, 0.0075, 0.009, 12, Crown::None, 0.0).unwrap()
     }
 

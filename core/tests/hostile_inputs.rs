@@ -5,8 +5,8 @@ use bearing_core::contact::{HertzLineContact, SlicedRoller};
 use bearing_core::film::{moes_central, Hydrodynamic, LnGroups, Regime};
 use bearing_core::math;
 use bearing_core::{
-    Bearing, BearingGeometry, BearingParams, ContactInput, ContactLaw, Crown, FilmModel, Lubricant,
-    Material, OperatingState, Regression,
+    Bearing, BearingGeometry, BearingParams, ContactInput, ContactLaw, Crown, FilmKind, FilmModel,
+    Lubricant, Material, OperatingState, Regression,
 };
 use proptest::prelude::*;
 
@@ -41,7 +41,7 @@ proptest! {
             let f = g.pass_frequencies(v[11]);
             prop_assert!(!f.outer_race_hz.is_nan() || !v[11].is_finite());
         }
-        let _ = OperatingState::new([v[0], v[1]], [v[2], v[3]], [v[4], v[5]], v[6], v[7]);
+        let _ = OperatingState::new([v[0], v[1]], [v[2], v[3]], [v[4], v[5]], v[6]);
     }
 
     #[test]
@@ -81,17 +81,24 @@ proptest! {
             let r = roller.evaluate(v[0], v[1]);
             prop_assert!(!r.load_n.is_nan() && !r.moment_nm.is_nan());
             let p = BearingParams::new(g, Material::STEEL, Material::STEEL, oil, law, 1e-5).unwrap();
-            let mut b = Bearing::<17, 10>::new(p).unwrap();
             let s = OperatingState {
                 displacement_m: [v[2], v[3]], velocity_m_s: [v[4], v[5]], tilt_rad: [v[6], v[7]],
-                shaft_speed_rad_s: v[8], cage_angle_rad: v[9],
+                shaft_speed_rad_s: v[8],
             };
-            for out in [*b.step(&Regression, &s), *b.step(&Hydrodynamic, &s), *b.step_dry(&s)] {
-                prop_assert!(out.force_n.iter().chain(out.moment_nm.iter()).all(|x| x.is_finite()));
-                prop_assert!(out.stiffness.iter().flatten().all(|x| x.is_finite()));
-                prop_assert!(out.damping_n_s_per_m.iter().flatten().all(|x| x.is_finite()));
+            let mut eq = None;
+            for film in FilmKind::ALL {
+                let mut b = Bearing::<17, 10>::new(p, film).unwrap();
+                let _ = b.set_cage_angle(v[9]);
+                for out in [b.evaluate(&s, 1e-4).ok().copied(), b.advance(&s, 1e-4).ok().copied()].into_iter().flatten() {
+                    prop_assert!(out.force_n.iter().chain(out.moment_nm.iter()).all(|x| x.is_finite()));
+                    prop_assert!(out.stiffness.iter().flatten().all(|x| x.is_finite()));
+                    prop_assert!(out.damping_n_s_per_m.iter().flatten().all(|x| x.is_finite()));
+                }
+                if film == FilmKind::Regression {
+                    eq = Some(b.static_equilibrium([v[0], v[1]], &s, 1e-6, 5));
+                }
             }
-            let eq = b.static_equilibrium(Some(&Regression), [v[0], v[1]], &s, 1e-6, 5);
+            let eq = eq.unwrap();
             prop_assert!(!eq.displacement_m[0].is_nan() || !s.displacement_m[0].is_finite());
         }
     }

@@ -2,7 +2,7 @@
 //! EHL solver (`bearing_ehl`) in every loaded contact, the film–load coupling converged,
 //! in f64.
 //!
-//! For each roller the fixed point of PHYSICS.md §4 is solved exactly as the core defines it —
+//! For each roller the fixed point of docs/physics.md §4 is solved exactly as the core defines it —
 //! δ = δ_geo + h_in(Q) + h_out(Q), Q = Σ_k q_k(δ + x_k ψ − 2P(x_k)) with the same slices, crown
 //! and Palmgren law — but with the films from the numerical solver (Roelands viscosity,
 //! Dowson–Higginson density, default grid) instead of the core's film model, and solved until
@@ -64,7 +64,7 @@ impl Slices {
             .enumerate()
         {
             *x = (k as f64 + 0.5) * l / SLICES as f64 - 0.5 * l;
-            // ISO/TS 16281 logarithmic crown (PHYSICS.md §3), on both contacts.
+            // ISO/TS 16281 logarithmic crown (docs/physics.md §3), on both contacts.
             let r = 2.0 * *x / l;
             *c = -2.0 * scale * 0.00035 * d * -(1.0 - r * r).max(1.0e-6).ln();
         }

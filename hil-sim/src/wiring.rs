@@ -7,7 +7,7 @@
 
 use crate::kernel::{FilmKind, Kernel, KernelError, KernelFault};
 use crate::outputs::StepOutputs;
-use crate::replay::{AccuracyReference, BearingStepper, FilmChoice, StepFault};
+use crate::replay::{AccuracyReference, BearingStepper, StepFault};
 use crate::trace::{Sample, TraceMeta};
 use std::path::PathBuf;
 
@@ -15,18 +15,6 @@ use std::path::PathBuf;
 /// `hil-sim replay` and `hil-sim qemu`.
 pub fn default_trace() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("traces/hub_motor_runup.bin")
-}
-
-impl FilmChoice {
-    /// The kernel's film kind.
-    pub fn kind(self) -> FilmKind {
-        match self {
-            FilmChoice::Int => FilmKind::Int,
-            FilmChoice::F32 => FilmKind::F32,
-            FilmChoice::Regression => FilmKind::Regression,
-            FilmChoice::Dry => FilmKind::Dry,
-        }
-    }
 }
 
 /// A sentence for a kernel construction error.
@@ -110,9 +98,9 @@ pub fn primed_stepper(
 }
 
 /// Builds the product's models for the trace, primed at its first sample.
-pub fn product(meta: &TraceMeta, film: FilmChoice, first: &Sample) -> Result<Product, String> {
+pub fn product(meta: &TraceMeta, film: FilmKind, first: &Sample) -> Result<Product, String> {
     Ok(Product {
-        stepper: Box::new(primed_stepper(meta, film.kind(), first)?),
+        stepper: Box::new(primed_stepper(meta, film, first)?),
         dry: Some(Box::new(primed_stepper(meta, FilmKind::Dry, first)?)),
         reference: Some(Box::new(crate::reference::NumericalReference::new(meta)?)),
     })

@@ -11,7 +11,7 @@ hil="$root/target/release/hil-sim"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-# Hub-motor shaft (PHYSICS.md §6.2), regression film: run-up 1000 -> 2000 rpm in 1 s after
+# Hub-motor shaft (docs/physics.md §6.2), regression film: run-up 1000 -> 2000 rpm in 1 s after
 # 0.1 s settling at 1000 rpm. The gear-mesh order (17x) crosses the first lateral mode
 # (~2620 rad/s, `bearing shaft campbell`) near 1470 rpm. Integrated at dt = 10 us, every 5th
 # step kept: 20 kHz, 20 000 samples. Newton stall bound 3 nm: at the resonance the default
@@ -22,7 +22,7 @@ trap 'rm -rf "$work"' EXIT
   --out "$work/hub" --json > "$work/hub.json"
 "$hil" trace convert "$work/hub_b0_trace.csv" hil-sim/traces/hub_motor_runup.bin
 
-# NU 205 rig (PHYSICS.md §6.1), regression film: the last 0.3 s of the 0 -> 15 000 rpm / 4 s
+# NU 205 rig (docs/physics.md §6.1), regression film: the last 0.3 s of the 0 -> 15 000 rpm / 4 s
 # sweep at its rate (3750 rpm/s), 13 875 -> 15 000 rpm, after 0.1 s settling at 13 875 rpm,
 # sampled at the rig's 100 kHz: 30 000 samples (the whole sweep would be 400 000, 11 MB).
 "$bearing" shaft run --config configs/shaft_nu205_rig.toml \

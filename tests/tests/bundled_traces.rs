@@ -171,7 +171,7 @@ fn hub_motor_runup_trace_is_valid_and_crosses_the_first_mode() {
     );
 }
 
-/// Reference: the recording parameters of regenerate.sh — the last 0.3 s of the PHYSICS.md §6.1
+/// Reference: the recording parameters of regenerate.sh — the last 0.3 s of the docs/physics.md §6.1
 /// sweep (13 875 → 15 000 rpm) at the rig's 100 kHz.
 #[test]
 fn nu205_sweep_trace_is_valid() {

@@ -2,7 +2,7 @@
 //! pattern, NaN, ±∞, zero, negative, absurd magnitudes — `AnnF32` and `AnnInt` return a
 //! finite, non-negative film, and anything outside the training domain is flagged
 //! `Fallback` and served by the regression formulas (checked against an independent
-//! evaluation of Dowson–Toyoda / Dowson–Higginson with `powf`, PHYSICS.md §5.1).
+//! evaluation of Dowson–Toyoda / Dowson–Higginson with `powf`, docs/physics.md §5.1).
 
 use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::film::{ContactInput, Film, FilmModel, FilmSource};

@@ -75,7 +75,7 @@ fn firmware_replay_matches_the_host_bit_for_bit_and_counts_deterministically() {
         first.calibration
     );
     assert!(first.instructions_per_step.min > 0);
-    // The core's fixed-work rule (ARCHITECTURE.md): every step the same instruction count.
+    // The core's fixed-work rule (docs/architecture.md): every step the same instruction count.
     assert!(first.deterministic, "{:?}", first.instructions_per_step);
     assert!(first.flash_bytes > 1000 && first.flash_bytes < 1024 * 1024);
     assert!(first.stack_bytes > 0 && u64::from(first.stack_bytes) + first.ram_bytes < 128 * 1024);
@@ -86,7 +86,7 @@ fn firmware_replay_matches_the_host_bit_for_bit_and_counts_deterministically() {
     let profiled = first
         .profile
         .iter()
-        .find(|e| e.item.starts_with("Bearing::step regression"))
+        .find(|e| e.item.starts_with("Bearing::advance regression"))
         .map(|e| f64::from(e.instructions))
         .unwrap();
     let replayed = f64::from(first.instructions_per_step.median);

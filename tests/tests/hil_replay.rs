@@ -5,12 +5,12 @@
 //! 10⁻⁵ relative residual) with the parameters read from `configs/hub_motor.toml` by the host's
 //! config loader — independent of the harness's trace formats, kernel parameter table, cage
 //! angle, warm-start priming and output plumbing, which are what this test checks. The dry
-//! model at the same displacement must carry less (PHYSICS.md §4: the film adds approach).
+//! model at the same displacement must carry less (docs/physics.md §4: the film adds approach).
 
-use bearing_core::{Bearing, OperatingState, Regression};
+use bearing_core::{Bearing, OperatingState};
 use bearing_hil::replay::engine::Parts;
 use bearing_hil::replay::stats::Limits;
-use bearing_hil::replay::{replay, FilmChoice, ReplayConfig};
+use bearing_hil::replay::{replay, FilmKind, ReplayConfig};
 use bearing_hil::trace::{Sample, Trace, TraceMeta, ValidationOptions};
 use bearing_hil::wiring;
 use std::path::Path;
@@ -25,11 +25,10 @@ fn a_trace_at_static_equilibrium_replays_to_the_applied_load() {
         velocity_m_s: [0.0; 2],
         tilt_rad: [0.0; 2],
         shaft_speed_rad_s: speed,
-        cage_angle_rad: 0.0,
     };
-    let mut bearing: Bearing<17, 10> = Bearing::new(params).unwrap();
+    let mut bearing: Bearing<17, 10> = Bearing::new(params, FilmKind::Regression).unwrap();
     let applied = [0.0, -2000.0];
-    let equilibrium = bearing.static_equilibrium(Some(&Regression), applied, &start, 1e-5, 100);
+    let equilibrium = bearing.static_equilibrium(applied, &start, 1e-5, 100);
     assert!(equilibrium.converged, "{equilibrium:?}");
     let [x, y] = equilibrium.displacement_m;
 
@@ -59,7 +58,7 @@ fn a_trace_at_static_equilibrium_replays_to_the_applied_load() {
     let trace = Trace::read(&path, &ValidationOptions::default()).unwrap();
 
     let mut product =
-        wiring::product(&trace.meta, FilmChoice::Regression, &trace.samples[0]).unwrap();
+        wiring::product(&trace.meta, FilmKind::Regression, &trace.samples[0]).unwrap();
     let config = ReplayConfig {
         rate_hz: 10_000.0,
         reference_every: 0,

@@ -2,7 +2,7 @@
 //!
 //! Run: `cd benches/qemu-film-ann && cargo run --release` (needs the thumbv7em-none-eabihf target
 //! and qemu-system-arm). With `-icount shift=0` every guest instruction is 1 ns of virtual time
-//! (EMBEDDED.md); TIM2 of QEMU's STM32F405 model counts virtual nanoseconds at prescaler 0, so its
+//! (docs/embedded.md); TIM2 of QEMU's STM32F405 model counts virtual nanoseconds at prescaler 0, so its
 //! counter difference is an instruction count (`bearing-m4-counter`, calibrated on 1000 `nop`).
 //! Counts are instructions, not Cortex-M4 cycles. For each contact — 20 from the committed pipeline dataset,
 //! one out of the domain, one hostile — it prints the counts of `AnnInt::film`, `AnnF32::film` and

@@ -18,7 +18,6 @@
 #![no_std]
 #![no_main]
 
-use bearing_core::film::ann::fastmath;
 use bearing_core::math;
 use core::hint::black_box;
 use cortex_m_rt::entry;
@@ -301,24 +300,24 @@ fn main() -> ! {
         // The film network's seven inputs (DOMAIN of model_weights.rs, and the film table's
         // node loads 1 N … 144 kN): α ≈ 10⁻⁸ 1/Pa up to E' ≈ 2.5·10¹¹ Pa.
         row(
-            "`fastmath::ln` → `ln`",
+            "`math::series::ln_atanh` → `ln`",
             "1e-9 … 2.6e11 (network inputs)",
             (1e-9, 2.6e11, Geometric),
             Absolute,
             empty,
-            fastmath::ln,
+            math::series::ln_atanh,
             F32Ext::ln,
             libm::log,
         ),
         // The film from its logarithm: ln h in m, 10⁻¹¹ m (standstill floor) … 0.05 m (Martin's
         // film at 1 N).
         row(
-            "`fastmath::exp` → `exp`",
+            "`math::series::exp_taylor` → `exp`",
             "−25 … −3 (ln film in m)",
             (-25.0, -3.0, Linear),
             Relative,
             empty,
-            fastmath::exp,
+            math::series::exp_taylor,
             F32Ext::exp,
             libm::exp,
         ),

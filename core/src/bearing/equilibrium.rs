@@ -7,8 +7,7 @@
 //! one micrometre-scale trust length; both vanish from the converged answer, which is
 //! judged on the force residual alone. Not for the real-time loop: it stops when converged.
 
-use super::{Bearing, BearingOutput, StepStatus};
-use crate::film::FilmModel;
+use super::{Bearing, BearingOutput};
 use crate::params::OperatingState;
 
 /// Result of a static solve.
@@ -29,12 +28,12 @@ const TRUST_M: f32 = 5.0e-6;
 
 impl<const Z: usize, const S: usize> Bearing<Z, S> {
     /// Solve for the displacement at which the bearing carries `applied_force_n` [F_x, F_y] (N)
-    /// acting on the inner race, at the speed and cage angle of `state` (its displacement is
-    /// the start). `film = None` solves the dry bearing. Stops when the force residual is below
-    /// `relative_tolerance·|F|` or after `max_iterations`.
-    pub fn static_equilibrium<F: FilmModel + ?Sized>(
+    /// acting on the inner race, with the bearing's film model, at the speed of `state` (its
+    /// displacement is the start) and the committed cage angle. Stops when the force residual
+    /// is below `relative_tolerance·|F|` or after `max_iterations`; a refused state stops it
+    /// unconverged. It commits the warm start of its last iterate.
+    pub fn static_equilibrium(
         &mut self,
-        film: Option<&F>,
         applied_force_n: [f32; 2],
         state: &OperatingState,
         relative_tolerance: f32,
@@ -61,13 +60,10 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             // calls; three steps still left 1.7·10⁻⁶ at 2 kN on the hub bearing, and the Newton
             // iteration stalled there. A step renews one node of the table, so its force can
             // also depend on the speeds of earlier steps.)
-            let out: BearingOutput<Z> = *match film {
-                Some(f) => self.settle(f, &s, super::SETTLE_STEPS),
-                None => self.step_dry(&s),
+            let out: BearingOutput<Z> = match self.settle(&s, super::SETTLE_STEPS) {
+                Ok(out) => *out,
+                Err(_) => return result,
             };
-            if out.status != StepStatus::Ok {
-                return result;
-            }
             let rx = out.force_n[0] + applied_force_n[0];
             let ry = out.force_n[1] + applied_force_n[1];
             result.displacement_m = s.displacement_m;

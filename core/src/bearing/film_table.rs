@@ -33,15 +33,15 @@ use crate::lanes::Real;
 use crate::math::{exp, exp_in_range, ln, max, min, sqrt};
 
 /// Nodes of the film table per contact kind.
-pub const TABLE_NODES: usize = 96;
+pub(crate) const TABLE_NODES: usize = 96;
 /// Spacing of the nodes in ln Q.
-pub const TABLE_STEP: f32 = 0.125;
+pub(crate) const TABLE_STEP: f32 = 0.125;
 /// Table nodes a real-time step renews, each for one contact kind (one film-model call each).
-pub const REFRESHES_PER_STEP: usize = 1;
+pub(crate) const REFRESHES_PER_STEP: usize = 1;
 /// Speed exponent κ by which a node's film is carried from the speed it was computed at to the
 /// step's speed: h ∝ u^0.67 (Dowson–Higginson), u^0.7 (Hamrock, *Fundamentals of Fluid Film
 /// Lubrication*, 1994, line contacts), Moes' EHL asymptotes u^0.67–0.75.
-pub const SPEED_EXPONENT: f32 = 0.7;
+pub(crate) const SPEED_EXPONENT: f32 = 0.7;
 
 /// ln Q of the first node: 1 N.
 const LN_LOAD_FIRST: f32 = 0.0;
@@ -259,23 +259,31 @@ impl FilmTable {
         self.phase & 1
     }
 
-    /// This step's films for contact templates `contacts` (inner, outer; loads ignored; they
-    /// always carry some entrainment, see the bearing's standstill floor) with Martin
-    /// coefficients `martin`, after renewing every node (`renew_all`) or
-    /// [`REFRESHES_PER_STEP`] node of one contact: by turns the next node of the loaded range
-    /// `loaded` (ln Q, widened by a margin) for the inner and the outer contact, then the next
-    /// node of the whole table for each. Round robin renews the node computed longest ago, so
-    /// at the speed farthest from this step's; the cost is fixed.
-    pub(crate) fn step<F: FilmModel + ?Sized>(
+    /// u^κ of a step whose contacts have the entrainment speed of `contacts[0]` (both
+    /// contacts share it), by which the table's nodes are scaled.
+    pub(crate) fn speed_scale(contacts: &[ContactInput; 2]) -> f32 {
+        exp(SPEED_EXPONENT * ln(contacts[0].entrainment_speed_m_s))
+    }
+
+    /// Renew every node (`renew_all`) or [`REFRESHES_PER_STEP`] node of one contact from
+    /// `model`, for contact templates `contacts` (inner, outer; loads ignored; they always
+    /// carry some entrainment, see the bearing's standstill floor) with Martin coefficients
+    /// `martin` at the speed of `1/inv_speed_scale` = u^κ ([`FilmTable::speed_scale`]): by
+    /// turns the next node of the loaded range `loaded` (ln Q, widened by a margin) for the
+    /// inner and the outer contact, then the next node of the whole table for each. Round
+    /// robin renews the node computed longest ago, so at the speed farthest from this step's;
+    /// the cost is fixed. Inlined into the step, as the renewal was before it became a function
+    /// of its own (a call costs the M4 ≈ 100 instructions of spills with the integer network).
+    #[inline(always)]
+    pub(crate) fn renew_nodes<F: FilmModel + ?Sized>(
         &mut self,
         model: &F,
         contacts: [ContactInput; 2],
         martin: [f32; 2],
+        inv_speed_scale: f32,
         loaded: (f32, f32),
         renew_all: bool,
-    ) -> StepFilms<'_> {
-        let speed_scale = exp(SPEED_EXPONENT * ln(contacts[0].entrainment_speed_m_s));
-        let inv_speed_scale = 1.0 / speed_scale;
+    ) {
         if renew_all {
             for i in 0..TABLE_NODES {
                 for (k, (contact, &b)) in contacts.iter().zip(martin.iter()).enumerate() {
@@ -314,11 +322,38 @@ impl FilmTable {
                 self.phase = (self.phase + 1) & 3;
             }
         }
+    }
+
+    /// The table as a step's film law at speed scale u^κ = `speed_scale` (its inverse
+    /// `inv_speed_scale`) with Martin coefficients `martin` (inner, outer).
+    #[inline(always)]
+    pub(crate) fn films(
+        &self,
+        speed_scale: f32,
+        inv_speed_scale: f32,
+        martin: [f32; 2],
+    ) -> StepFilms<'_> {
         StepFilms {
             table: self,
             speed_scale,
             martin_per_scale: martin.map(|b| b * inv_speed_scale),
         }
+    }
+
+    /// [`FilmTable::renew_nodes`] at the speed of `contacts`, then this step's films.
+    #[cfg(test)]
+    pub(crate) fn step<F: FilmModel + ?Sized>(
+        &mut self,
+        model: &F,
+        contacts: [ContactInput; 2],
+        martin: [f32; 2],
+        loaded: (f32, f32),
+        renew_all: bool,
+    ) -> StepFilms<'_> {
+        let speed_scale = Self::speed_scale(&contacts);
+        let inv_speed_scale = 1.0 / speed_scale;
+        self.renew_nodes(model, contacts, martin, inv_speed_scale, loaded, renew_all);
+        self.films(speed_scale, inv_speed_scale, martin)
     }
 }
 

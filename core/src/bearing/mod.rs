@@ -1,110 +1,73 @@
 //! The bearing step: from inner-race motion to roller loads, forces, stiffness and damping.
 //!
-//! [`Bearing`] owns everything a step needs (sliced rollers, roller directions, the warm start)
-//! in fixed arrays sized by the const generics `Z` (rollers) and `S` (slices per roller). Its
-//! [`Bearing::step`] runs the pipeline of PHYSICS.md §4 with a film model; [`Bearing::step_dry`]
-//! is today's multi-body practice (film ≡ 0), for comparison. Both take the same number of
-//! operations for every input, and neither can panic: a bad operating state is refused with a
-//! flagged, all-zero output.
+//! [`Bearing`] owns everything a step needs (sliced rollers, roller directions, the film model
+//! chosen at construction, the cage angle, the warm start and the film table) in fixed arrays
+//! sized by the const generics `Z` (rollers) and `S` (slices per roller). Two calls run the
+//! pipeline of docs/physics.md §4:
+//!
+//! - [`Bearing::advance`], the real-time step: it moves time on by `dt`, integrating the cage
+//!   angle, and carries the warm start and one film-table node to the next step;
+//! - [`Bearing::evaluate`], a trial for implicit integrators: the same computation from the
+//!   committed state, which it leaves as it was, so its result depends on the committed state
+//!   and the trial input alone, however many trials came before.
+//!
+//! Both take the same number of operations for every input, and neither can panic: a bad
+//! operating state or time step is refused with an `Err` naming the field, and nothing is
+//! committed. [`DynBearing`] is the same bearing behind an object-safe trait, for callers that
+//! choose the roller count at run time.
 
 mod coupling;
+mod dynamic;
 mod equilibrium;
+mod film_kind;
 mod film_table;
 mod lockstep;
 #[cfg(feature = "nalgebra")]
 mod nalgebra;
 mod output;
+mod params;
+mod parts;
 
-pub use coupling::NEWTON_ITERATIONS;
+pub use dynamic::DynBearing;
+#[cfg(feature = "alloc")]
+pub use dynamic::{boxed, MAX_ROLLERS, MIN_ROLLERS, SLICES};
 pub use equilibrium::Equilibrium;
-pub use film_table::{REFRESHES_PER_STEP, SPEED_EXPONENT, TABLE_NODES, TABLE_STEP};
-pub use output::{BearingOutput, RollerOutput, StepStatus};
+pub use film_kind::{FilmKind, UnknownFilmKind};
+pub use output::{BearingOutput, OutputView, RollerOutput};
+pub use params::BearingParams;
+use parts::{Parts, Place, LOCKSTEP};
 
-use crate::contact::{ContactLaw, SlicedRoller};
+use crate::contact::SlicedRoller;
 use crate::error::{in_range, Allowed, ParamError};
-use crate::film::{ContactInput, FilmModel, FilmSource, Regime, RegimeAxis, ServedLoads};
+use crate::film::ann::{AnnF32, AnnInt};
+use crate::film::{FilmModel, FilmSource, Regime, RegimeAxis, Regression, ServedLoads};
 use crate::lanes::{Wide, WIDE_LANES};
-use crate::math::{ln, select, sin_cos};
-use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material, OperatingState};
-use core::f32::consts::PI;
+use crate::math::ln;
+use crate::params::{OperatingState, MAX_CAGE_ANGLE_RAD, MAX_TIME_STEP_S};
+use core::f32::consts::TAU;
+use coupling::NEWTON_ITERATIONS;
 use coupling::{finish_roller, prepare_roller, ContactContext, CoupledRoller, RollerMemory};
 use film_table::FilmTable;
-use output::StiffnessSums;
 
-/// Everything that defines a lubricated roller bearing.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BearingParams {
-    geometry: BearingGeometry,
-    reduced_modulus_pa: f32,
-    lubricant: Lubricant,
-    law: ContactLaw,
-    damping_factor_s: f32,
-}
-
-impl BearingParams {
-    /// A bearing from its geometry, the materials of the rings and the rollers, the lubricant,
-    /// the slice contact law and the damping factor f_damp (s; 0 … 10⁻³, the thesis used
-    /// 0.25·10⁻⁵ … 2.5·10⁻⁵, PHYSICS.md §4).
-    pub fn new(
-        geometry: BearingGeometry,
-        ring_material: Material,
-        roller_material: Material,
-        lubricant: Lubricant,
-        law: ContactLaw,
-        damping_factor_s: f32,
-    ) -> Result<Self, ParamError> {
-        Ok(Self {
-            geometry,
-            reduced_modulus_pa: reduced_modulus(&ring_material, &roller_material),
-            lubricant,
-            law,
-            damping_factor_s: in_range("damping_factor_s", damping_factor_s, 0.0, 1.0e-3)?,
-        })
-    }
-
-    /// Geometry.
-    pub fn geometry(&self) -> &BearingGeometry {
-        &self.geometry
-    }
-    /// Reduced modulus E' of the roller–race contacts (Pa).
-    pub fn reduced_modulus_pa(&self) -> f32 {
-        self.reduced_modulus_pa
-    }
-    /// Lubricant.
-    pub fn lubricant(&self) -> &Lubricant {
-        &self.lubricant
-    }
-    /// Slice contact law.
-    pub fn law(&self) -> ContactLaw {
-        self.law
-    }
-    /// Damping factor f_damp (s).
-    pub fn damping_factor_s(&self) -> f32 {
-        self.damping_factor_s
-    }
-
-    /// The film-model input of the inner (`outer = false`) or outer contact for roller load
-    /// `load_n` (N) at shaft speed ω (rad/s).
-    pub fn contact_input(&self, outer: bool, load_n: f32, shaft_speed_rad_s: f32) -> ContactInput {
-        let g = &self.geometry;
-        ContactInput {
-            load_n,
-            length_m: g.roller_length_m(),
-            entrainment_speed_m_s: g.entrainment_speed_m_s(shaft_speed_rad_s),
-            reduced_radius_m: if outer {
-                g.outer_reduced_radius_m()
-            } else {
-                g.inner_reduced_radius_m()
-            },
-            reduced_modulus_pa: self.reduced_modulus_pa,
-            pressure_viscosity_pa_inv: self.lubricant.pressure_viscosity_pa_inv(),
-            viscosity_pa_s: self.lubricant.viscosity_pa_s(),
-        }
-    }
-}
-
-/// Steps [`Bearing::settle`] needs from a cold start (tested over the PHYSICS.md §5.3 domain).
+/// Steps [`Bearing::settle`] needs from a cold start (tested over the docs/physics.md §5.3 domain).
 pub const SETTLE_STEPS: usize = 6;
+
+/// 1/(2π), by which an angle is divided into turns.
+const INV_TAU: f32 = 1.0 / TAU;
+
+/// What a pass of the step does to the committed state.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Pass {
+    /// A trial ([`Bearing::evaluate`]): nothing committed changes. (On a film table not yet
+    /// filled, the trial fills all of it at its own speed, as every trial until the first
+    /// commit does, so the result is still a function of the trial input.)
+    Trial,
+    /// A real-time step ([`Bearing::advance`]): cage angle, warm start and the next node of
+    /// the film table (all of it when not yet filled) are committed.
+    Advance,
+    /// As `Advance`, renewing every node of the film table ([`Bearing::settle`]'s first step).
+    RenewAll,
+}
 
 /// Floor of the entrainment speed in the film arithmetic (m/s); see `contact_contexts`.
 const MIN_ENTRAINMENT_M_S: f32 = 1.0e-6;
@@ -135,10 +98,28 @@ impl ContactLogs {
     }
 }
 
-/// A bearing of `Z` rollers with `S` slices each, with its warm start.
+/// A bearing of `Z` rollers with `S` slices each, stepping with one film model, with its cage
+/// angle and warm start.
+///
+/// ```
+/// use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
+///
+/// let params = BearingDesign::NU205.params()?;
+/// let mut bearing = Bearing::<12, 10>::new(params, FilmKind::Regression)?;
+/// let state = OperatingState::new([0.0, -4.0e-6], [0.0; 2], [0.0; 2], 1000.0)?;
+/// bearing.settle(&state, bearing_core::bearing::SETTLE_STEPS)?;
+/// let out = bearing.advance(&state, 1.0e-4)?;
+/// assert!(out.force_n[1] > 0.0); // the rollers push the race back up
+/// # Ok::<(), bearing_core::ParamError>(())
+/// ```
 #[derive(Clone, Debug)]
 pub struct Bearing<const Z: usize, const S: usize> {
     params: BearingParams,
+    /// The film model every step uses and the film table holds.
+    film: FilmKind,
+    /// Committed cage angle θ_c (rad), wrapped by whole turns into (−2π, 2π): [0, 2π) while
+    /// the shaft turns forward.
+    cage_angle_rad: f32,
     roller: SlicedRoller<S>,
     /// cos and sin of 2πj/Z, the roller positions relative to the cage, and 2πj/Z (rad).
     pitch: [(f32, f32, f32); Z],
@@ -159,8 +140,19 @@ pub struct Bearing<const Z: usize, const S: usize> {
 }
 
 impl<const Z: usize, const S: usize> Bearing<Z, S> {
-    /// A bearing whose geometry has exactly `Z` rollers, sliced `S ≥ 1` times.
-    pub fn new(params: BearingParams) -> Result<Self, ParamError> {
+    /// A bearing whose geometry has exactly `Z` rollers, sliced `S ≥ 1` times, stepping with
+    /// the film model `film`; cage angle 0, cold warm start, film table empty (the first
+    /// committing step fills it).
+    ///
+    /// ```
+    /// use bearing_core::{Bearing, BearingDesign, FilmKind};
+    /// let params = BearingDesign::HUB_MOTOR.params()?;
+    /// assert!(Bearing::<17, 10>::new(params, FilmKind::Int).is_ok());
+    /// let wrong = Bearing::<12, 10>::new(params, FilmKind::Int).unwrap_err();
+    /// assert_eq!(wrong.field, "roller_count");
+    /// # Ok::<(), bearing_core::ParamError>(())
+    /// ```
+    pub fn new(params: BearingParams, film: FilmKind) -> Result<Self, ParamError> {
         let count = params.geometry.roller_count();
         if usize::from(count) != Z {
             return Err(ParamError {
@@ -195,6 +187,8 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 ContactLogs::of(&params, true),
             ],
             params,
+            film,
+            cage_angle_rad: 0.0,
             pitch,
             memory: [RollerMemory::cold(&roller); Z],
             load_span: DEFAULT_LOAD_SPAN,
@@ -210,21 +204,127 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         &self.params
     }
 
-    /// The sliced roller.
-    pub fn roller(&self) -> &SlicedRoller<S> {
-        &self.roller
+    /// The film model, chosen at construction.
+    pub fn film(&self) -> FilmKind {
+        self.film
     }
 
-    /// The last output.
+    /// The output of the last call that computed ([`Bearing::advance`],
+    /// [`Bearing::evaluate`], [`Bearing::settle`]); all zero before the first.
     pub fn output(&self) -> &BearingOutput<Z> {
         &self.output
     }
 
-    /// Forget the warm start (the next step starts from unloaded rollers).
+    /// The committed cage angle θ_c (rad): roller j sits at θ_c + 2πj/Z (docs/physics.md §2).
+    /// Kept within (−2π, 2π) by whole turns, in [0, 2π) while the shaft turns forward.
+    pub fn cage_angle_rad(&self) -> f32 {
+        self.cage_angle_rad
+    }
+
+    /// Set the cage angle θ_c (rad, finite, |θ_c| ≤ 10⁴), wrapped by whole turns as
+    /// [`Bearing::advance`] wraps it.
+    pub fn set_cage_angle(&mut self, cage_angle_rad: f32) -> Result<(), ParamError> {
+        let angle = in_range(
+            "cage_angle_rad",
+            cage_angle_rad,
+            -MAX_CAGE_ANGLE_RAD,
+            MAX_CAGE_ANGLE_RAD,
+        )?;
+        self.cage_angle_rad = wrap_turns(angle);
+        Ok(())
+    }
+
+    /// Forget the warm start and the film table (the next step starts from unloaded rollers
+    /// and fills the whole table); the cage angle is kept.
     pub fn reset(&mut self) {
         self.memory = [RollerMemory::cold(&self.roller); Z];
         self.load_span = DEFAULT_LOAD_SPAN;
         self.table_stale = true;
+    }
+
+    /// The real-time step: time moves on by `dt_s` (s, 0 … 1) to the inner-race motion
+    /// `state`. The cage turns by ω_c·dt at the cage speed ω_c = (ω/2)(1 − D/d_m) of the
+    /// state's shaft speed (docs/physics.md §2) and is wrapped by whole turns, so a run may last
+    /// any time; the warm start carries to the next step, and the film table renews one node
+    /// (the whole table at the first step after [`Bearing::new`] or [`Bearing::reset`]). The
+    /// work is the same at every step.
+    ///
+    /// A refused `state` or `dt_s` returns the error naming the field and commits nothing.
+    ///
+    /// ```
+    /// use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
+    /// let mut bearing = Bearing::<17, 10>::new(BearingDesign::HUB_MOTOR.params()?, FilmKind::Dry)?;
+    /// let state = OperatingState::new([0.0, -5.0e-6], [0.0; 2], [0.0; 2], 2000.0)?;
+    /// bearing.advance(&state, 1.0e-3)?;
+    /// // ω_c = 0.5·2000·(1 − 8.8/60) rad/s for 1 ms.
+    /// assert!((bearing.cage_angle_rad() - 0.853_333).abs() < 1e-5);
+    /// let refused = bearing.advance(&state, f32::NAN).unwrap_err();
+    /// assert_eq!(refused.field, "time_step_s");
+    /// # Ok::<(), bearing_core::ParamError>(())
+    /// ```
+    pub fn advance(
+        &mut self,
+        state: &OperatingState,
+        dt_s: f32,
+    ) -> Result<&BearingOutput<Z>, ParamError> {
+        self.run(state, dt_s, Pass::Advance)
+    }
+
+    /// A trial evaluation for implicit integrators: the output at the inner-race motion
+    /// `state`, `dt_s` (s, 0 … 1) after the committed state, with the cage turned as
+    /// [`Bearing::advance`] would turn it. The committed state (cage angle, warm start, film
+    /// table) is left as it was: the result depends on it and on the arguments alone, bit for
+    /// bit, however many trials came before. Commit the accepted state with
+    /// [`Bearing::advance`].
+    ///
+    /// ```
+    /// use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
+    /// let mut bearing = Bearing::<12, 10>::new(BearingDesign::NU205.params()?, FilmKind::Regression)?;
+    /// let state = OperatingState::new([0.0, -4.0e-6], [0.0; 2], [0.0; 2], 1500.0)?;
+    /// bearing.settle(&state, 3)?;
+    /// let first = *bearing.evaluate(&state, 1.0e-4)?;
+    /// let trial = OperatingState { displacement_m: [0.0, -5.0e-6], ..state };
+    /// bearing.evaluate(&trial, 1.0e-4)?;
+    /// assert_eq!(*bearing.evaluate(&state, 1.0e-4)?, first);
+    /// # Ok::<(), bearing_core::ParamError>(())
+    /// ```
+    pub fn evaluate(
+        &mut self,
+        state: &OperatingState,
+        dt_s: f32,
+    ) -> Result<&BearingOutput<Z>, ParamError> {
+        self.run(state, dt_s, Pass::Trial)
+    }
+
+    /// The cage angle `dt_s` after the committed one at shaft speed ω, wrapped by whole turns
+    /// (one float-to-integer truncation: its cost does not depend on the angle, unlike
+    /// `floorf`'s on the M4): exact into [0, 2π) for the non-negative angles of forward
+    /// rotation, within (−2π, 2π) otherwise.
+    fn cage_angle_after(&self, shaft_speed_rad_s: f32, dt_s: f32) -> f32 {
+        let turned = self.params.geometry.cage_speed_rad_s(shaft_speed_rad_s) * dt_s;
+        wrap_turns(self.cage_angle_rad + turned)
+    }
+
+    /// Check the inputs, then one pass with the bearing's film model.
+    fn run(
+        &mut self,
+        state: &OperatingState,
+        dt_s: f32,
+        pass: Pass,
+    ) -> Result<&BearingOutput<Z>, ParamError> {
+        state.check()?;
+        in_range("time_step_s", dt_s, 0.0, MAX_TIME_STEP_S)?;
+        let cage_angle_rad = self.cage_angle_after(state.shaft_speed_rad_s, dt_s);
+        match self.film {
+            FilmKind::Int => self.lubricated(&AnnInt, state, cage_angle_rad, pass),
+            FilmKind::F32 => self.lubricated(&AnnF32, state, cage_angle_rad, pass),
+            FilmKind::Regression => self.lubricated(&Regression, state, cage_angle_rad, pass),
+            FilmKind::Dry => self.dry(state, cage_angle_rad),
+        }
+        if pass != Pass::Trial {
+            self.cage_angle_rad = cage_angle_rad;
+        }
+        Ok(&self.output)
     }
 
     /// Per-step data of the two contacts (inner, outer).
@@ -255,37 +355,39 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         ]
     }
 
-    /// One lubricated step: roller films from `film`, film-coupled loads, forces, stiffness.
-    ///
-    /// The film model is called at [`REFRESHES_PER_STEP`] node(s) of the bearing's film table
-    /// (`film_table`: by turns the next node of the loaded range or of the whole table, for
-    /// one contact kind), so every step costs the same; the first step after [`Bearing::new`]
-    /// or [`Bearing::reset`] fills the whole table. [`Bearing::settle`] (the whole table at its
-    /// first step) converges the warm start before a real-time loop, and is the call for
-    /// quasi-static use (equilibrium iterations), where the force must be one function of the
-    /// state.
-    ///
-    /// A refused `state` leaves the warm start as it was and returns a zero output whose
-    /// status names the bad field.
-    pub fn step<F: FilmModel + ?Sized>(
+    /// [`Bearing::settle`] with another film model than the bearing's (a test double).
+    #[cfg(test)]
+    pub(crate) fn settle_with<F: FilmModel>(
         &mut self,
         film: &F,
         state: &OperatingState,
-    ) -> &BearingOutput<Z> {
-        let renew_all = self.table_stale;
-        self.step_renewing(film, state, renew_all)
+        steps: usize,
+    ) -> BearingOutput<Z> {
+        let angle = self.cage_angle_rad;
+        self.lubricated(film, state, angle, Pass::RenewAll);
+        for _ in 1..steps {
+            self.lubricated(film, state, angle, Pass::Advance);
+        }
+        self.output
     }
 
-    /// [`Bearing::step`], renewing every node of the film table (`renew_all`) or the next.
-    fn step_renewing<F: FilmModel + ?Sized>(
+    /// One lubricated pass with the film model `film` (the bearing's own) at cage angle
+    /// `cage_angle_rad`; `pass` says what it commits.
+    ///
+    /// The film model is called at `REFRESHES_PER_STEP` node(s) of the bearing's film table
+    /// (`film_table`: by turns the next node of the loaded range or of the whole table, for
+    /// one contact kind) by a committing pass, so every step costs the same; a trial reads the
+    /// table as committed. Inlined into `run` for every film model: as a call, the integer
+    /// network's step cost the M4 ≈ 90 instructions more (28 244 against 28 152 per replayed
+    /// hub-motor step).
+    #[inline(always)]
+    fn lubricated<F: FilmModel>(
         &mut self,
         film: &F,
         state: &OperatingState,
-        renew_all: bool,
-    ) -> &BearingOutput<Z> {
-        if let Err(e) = state.check() {
-            return self.reject(e);
-        }
+        cage_angle_rad: f32,
+        pass: Pass,
+    ) {
         let [inner, outer] = self.contact_contexts(state.shaft_speed_rad_s);
         let lubricated = self
             .params
@@ -309,20 +411,43 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         // table is), so a contact's interval is at most a step old.
         // One code path whichever contact it is (an index, not a branch per contact: with
         // the regression's trivial interval, the two branches differed by an instruction).
+        // A trial renews nothing, except a table never filled: then every trial fills all of
+        // it at its own speed (the same bits whatever the trials before), and the first
+        // committing pass fills it again.
+        let renew_all = self.table_stale | (pass == Pass::RenewAll);
+        let renew = (pass != Pass::Trial) | self.table_stale;
         let renewed = self.table.next_contact();
         if renew_all {
             self.served = templates.map(|t| film.served_loads(&t));
-        } else if let (Some(slot), Some(template)) =
-            (self.served.get_mut(renewed), templates.get(renewed))
+        } else if let (true, Some(slot), Some(template)) =
+            (renew, self.served.get_mut(renewed), templates.get(renewed))
         {
             *slot = film.served_loads(template);
         }
         let served = self.served.map(standstill);
         let martin = [inner.martin, outer.martin];
-        let films = self
-            .table
-            .step(film, templates, martin, self.load_span, renew_all);
-        self.table_stale = false;
+        let speed_scale = FilmTable::speed_scale(&templates);
+        let inv_speed_scale = 1.0 / speed_scale;
+        if renew {
+            self.table.renew_nodes(
+                film,
+                templates,
+                martin,
+                inv_speed_scale,
+                self.load_span,
+                renew_all,
+            );
+        }
+        let films = self.table.films(speed_scale, inv_speed_scale, martin);
+        // A trial works on a copy of the warm start (only a trial pays for the copy).
+        let mut trial_memory;
+        let memory = if pass == Pass::Trial {
+            trial_memory = self.memory;
+            &mut trial_memory
+        } else {
+            self.table_stale = false;
+            &mut self.memory
+        };
         let regime_axes = [inner, outer].map(|c| RegimeAxis::new(c.ln_m_offset, c.ln_l));
         let mut span = (f32::MAX, f32::MIN);
         let parts = Parts {
@@ -330,7 +455,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             roller: &self.roller,
             pitch: &self.pitch,
         };
-        let places = parts.places(state);
+        let places = parts.places(state, cage_angle_rad);
         // Each roller: its slice pass and power law (`prepare_roller`), NEWTON_ITERATIONS
         // Newton steps, its outputs (`finish_roller`). A superscalar host runs all of that
         // for eight rollers at a time in SIMD lanes (AVX2; four without it), several groups
@@ -347,12 +472,13 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 films: &films,
                 regime_axes: &regime_axes,
             }
-            .solve(&places, &mut self.memory, &mut coupled);
+            .solve(&places, memory, &mut coupled);
         }
         parts.assemble(
-            &mut self.memory,
+            memory,
             &mut self.output,
             state,
+            cage_angle_rad,
             &places,
             |roller, memory, j, geometric, tilt| {
                 let r = if LOCKSTEP {
@@ -399,41 +525,40 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             },
         );
         // The loads the next step renews the table at first; unchanged when nothing is loaded.
-        if span.0 <= span.1 {
+        if (span.0 <= span.1) & (pass != Pass::Trial) {
             self.load_span = span;
         }
-        &self.output
     }
 
-    /// Run [`Bearing::step`] `steps ≥ 1` times at the same state, the first renewing the whole
-    /// film table, so the warm start converges before a real-time loop begins
-    /// ([`SETTLE_STEPS`] reach |Δh|/h ≤ 10⁻³ from a cold start; a crowned roller just touching
-    /// needs four: its first step has no power law of its own).
-    pub fn settle<F: FilmModel + ?Sized>(
+    /// Converge the warm start at `state` before a real-time loop, or for quasi-static use
+    /// (equilibrium iterations, where the force must be one function of the state):
+    /// `steps ≥ 1` committing steps with no time passing (the cage angle stays), the first
+    /// renewing the whole film table at this speed. [`SETTLE_STEPS`] reach |Δh|/h ≤ 10⁻³
+    /// from a cold start (a crowned roller just touching needs four: its first step has no
+    /// power law of its own). The dry model has no warm start: one step.
+    pub fn settle(
         &mut self,
-        film: &F,
         state: &OperatingState,
         steps: usize,
-    ) -> &BearingOutput<Z> {
-        // The table depends on the speed alone: filled once, it is the model's at this state.
-        self.step_renewing(film, state, true);
-        for _ in 1..steps {
-            self.step_renewing(film, state, false);
+    ) -> Result<&BearingOutput<Z>, ParamError> {
+        self.run(state, 0.0, Pass::RenewAll)?;
+        if self.film != FilmKind::Dry {
+            for _ in 1..steps {
+                self.run(state, 0.0, Pass::Advance)?;
+            }
         }
-        &self.output
+        Ok(&self.output)
     }
 
-    /// One dry step (film ≡ 0): today's multi-body practice, for comparison.
-    pub fn step_dry(&mut self, state: &OperatingState) -> &BearingOutput<Z> {
-        if let Err(e) = state.check() {
-            return self.reject(e);
-        }
+    /// One dry pass (film ≡ 0) at cage angle `cage_angle_rad`: today's multi-body practice,
+    /// for comparison. It keeps nothing from one step to the next but the cage angle.
+    fn dry(&mut self, state: &OperatingState, cage_angle_rad: f32) {
         let parts = Parts {
             params: &self.params,
             roller: &self.roller,
             pitch: &self.pitch,
         };
-        let places = parts.places(state);
+        let places = parts.places(state, cage_angle_rad);
         // The host runs the slice pass of eight rollers at a time in SIMD lanes (four without
         // AVX2), as the lubricated step does; the M4 one roller after another. Same operations,
         // same results bit for bit (`slicing`'s lane test).
@@ -459,6 +584,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             &mut self.memory,
             &mut self.output,
             state,
+            cage_angle_rad,
             &places,
             |roller, _, j, geometric, tilt| {
                 let load = if LOCKSTEP {
@@ -476,134 +602,17 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 (load, roller, 0.0)
             },
         );
-        &self.output
-    }
-
-    fn reject(&mut self, error: ParamError) -> &BearingOutput<Z> {
-        self.output = BearingOutput::ZERO;
-        self.output.status = StepStatus::Rejected(error);
-        &self.output
     }
 }
 
-/// Whether the lubricated step solves the rollers in SIMD lanes, four at a time (hosts:
-/// `lockstep`), or each roller in turn (bare-metal ARM: the in-order Cortex-M).
-const LOCKSTEP: bool = !cfg!(all(target_arch = "arm", target_os = "none"));
-
-/// A roller's direction (cos, sin of θ_j), geometric approach (m) and tilt (rad) at a step.
-#[derive(Clone, Copy, Debug, Default)]
-struct Place {
-    cos: f32,
-    sin: f32,
-    geometric_m: f32,
-    tilt_rad: f32,
+/// Wrap an angle by whole turns: one truncation toward zero, exact into [0, 2π) for a
+/// non-negative angle, within (−2π, 2π) for a negative one.
+fn wrap_turns(angle_rad: f32) -> f32 {
+    let turns = (angle_rad * INV_TAU) as i32;
+    angle_rad - turns as f32 * TAU
 }
 
-/// The parts of a bearing the roller loop reads, borrowed apart from the warm start and the
-/// output it writes (and from the film table the lubricated step's closure reads).
-struct Parts<'a, const Z: usize, const S: usize> {
-    params: &'a BearingParams,
-    roller: &'a SlicedRoller<S>,
-    pitch: &'a [(f32, f32, f32); Z],
-}
-
-impl<const Z: usize, const S: usize> Parts<'_, Z, S> {
-    /// Where each roller is: its direction θ_j = θ_c + 2πj/Z (by the angle-sum identities),
-    /// geometric approach and tilt relative to the raceway.
-    fn places(&self, state: &OperatingState) -> [Place; Z] {
-        let [x, y] = state.displacement_m;
-        let [tilt_x, tilt_y] = state.tilt_rad;
-        let clearance = self.params.geometry.radial_clearance_m();
-        let (sin_c, cos_c) = sin_cos(state.cage_angle_rad);
-        let mut places = [Place::default(); Z];
-        for (place, &(cp, sp, _)) in places.iter_mut().zip(self.pitch.iter()) {
-            let c = cos_c * cp - sin_c * sp;
-            let s = sin_c * cp + cos_c * sp;
-            *place = Place {
-                cos: c,
-                sin: s,
-                geometric_m: x * c + y * s - clearance,
-                tilt_rad: tilt_y * c - tilt_x * s,
-            };
-        }
-        places
-    }
-
-    /// Run `roller_step` for every roller and sum forces, moments, stiffness and damping.
-    /// `roller_step(roller, its warm start, j, geometric approach, tilt)` returns the slice
-    /// load, the roller's film fields and the film coupling factor of the stiffness (see
-    /// `StiffnessSums`).
-    fn assemble(
-        &self,
-        memory: &mut [RollerMemory; Z],
-        out: &mut BearingOutput<Z>,
-        state: &OperatingState,
-        places: &[Place; Z],
-        mut roller_step: impl FnMut(
-            &SlicedRoller<S>,
-            &mut RollerMemory,
-            usize,
-            f32,
-            f32,
-        ) -> (crate::contact::RollerLoad, RollerOutput, f32),
-    ) {
-        let [vx, vy] = state.velocity_m_s;
-        let damping = self.params.damping_factor_s;
-        // Every roller entry is written below; the sums start from zero (in place: the output
-        // is a kilobyte and a half, and a copy of it costs as much as a roller).
-        out.force_n = [0.0; 2];
-        out.moment_nm = [0.0; 2];
-        out.status = StepStatus::Ok;
-        let mut stiffness = StiffnessSums::default();
-        let cage_angle = wrap_angle(state.cage_angle_rad);
-        for (j, ((&(_, _, pitch_angle), place), (slot, roller_memory))) in self
-            .pitch
-            .iter()
-            .zip(places.iter())
-            .zip(out.rollers.iter_mut().zip(memory.iter_mut()))
-            .enumerate()
-        {
-            let (c, s, geometric) = (place.cos, place.sin, place.geometric_m);
-            let (load, mut roller, coupling) =
-                roller_step(self.roller, roller_memory, j, geometric, place.tilt_rad);
-            let approach_rate = vx * c + vy * s;
-            let damping_force = damping * load.stiffness_n_per_m * approach_rate;
-            // A roller pushes, it cannot pull: the total roller force is clamped at zero.
-            let roller_force = crate::math::max(load.load_n + damping_force, 0.0);
-            out.force_n[0] -= roller_force * c;
-            out.force_n[1] -= roller_force * s;
-            out.moment_nm[0] += load.moment_nm * s;
-            out.moment_nm[1] -= load.moment_nm * c;
-            stiffness.add(
-                (c, s),
-                [
-                    load.stiffness_n_per_m,
-                    load.stiffness_moment_n,
-                    load.stiffness_tilt_nm,
-                ],
-                coupling,
-            );
-            // θ_c ∈ [−π, π] plus 2πj/Z ∈ [0, 2π): one turn back at most.
-            let angle = cage_angle + pitch_angle;
-            roller.angle_rad = angle - select(angle > PI, 2.0 * PI, 0.0);
-            roller.geometric_approach_m = geometric;
-            roller.load_n = load.load_n;
-            roller.damping_force_n = damping_force;
-            roller.moment_nm = load.moment_nm;
-            roller.contact_stiffness_n_per_m = load.stiffness_n_per_m;
-            *slot = roller;
-        }
-        out.stiffness = stiffness.matrix();
-        out.damping_n_s_per_m = stiffness.damping(damping);
-    }
-}
-
-/// Wrap an angle into [−π, π] at a fixed cost.
-fn wrap_angle(angle_rad: f32) -> f32 {
-    let turns = angle_rad * (0.5 * core::f32::consts::FRAC_1_PI);
-    let whole = (turns + if turns >= 0.0 { 0.5 } else { -0.5 }) as i32;
-    angle_rad - whole as f32 * (2.0 * core::f32::consts::PI)
-}
-
+#[cfg(test)]
+mod stepping_tests;
 #[cfg(test)]
 mod tests;

@@ -126,7 +126,7 @@ mod tests {
         Bearing, BearingGeometry, BearingParams, ContactLaw, Lubricant, Material, OperatingState,
     };
 
-    /// A loaded, lubricated hub-motor bearing (PHYSICS.md §6.2: d_m 60 mm, D 8.8 mm × 15 mm,
+    /// A loaded, lubricated hub-motor bearing (docs/physics.md §6.2: d_m 60 mm, D 8.8 mm × 15 mm,
     /// 17 rollers): every nalgebra view holds the output's numbers at the output's places, and
     /// the views agree with each other.
     #[test]

@@ -1,6 +1,5 @@
 //! What one bearing step returns: per-roller states, forces, moments, stiffness and damping.
 
-use crate::error::ParamError;
 use crate::film::{FilmSource, Regime};
 
 /// State of one roller after a step.
@@ -62,17 +61,6 @@ impl RollerOutput {
     };
 }
 
-/// Whether a step computed with its input.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub enum StepStatus {
-    /// Computed.
-    #[default]
-    Ok,
-    /// The operating state was refused (non-finite or out of range): forces and rollers are
-    /// zero and the warm start is kept. The error names the field.
-    Rejected(ParamError),
-}
-
 /// Result of one bearing step for `Z` rollers.
 ///
 /// Generalised coordinates of the inner race are (x, y, tilt about x, tilt about y).
@@ -88,8 +76,6 @@ pub struct BearingOutput<const Z: usize> {
     pub damping_n_s_per_m: [[f32; 2]; 2],
     /// Per-roller states.
     pub rollers: [RollerOutput; Z],
-    /// Whether the step computed.
-    pub status: StepStatus,
 }
 
 impl<const Z: usize> BearingOutput<Z> {
@@ -100,9 +86,51 @@ impl<const Z: usize> BearingOutput<Z> {
         stiffness: [[0.0; 4]; 4],
         damping_n_s_per_m: [[0.0; 2]; 2],
         rollers: [RollerOutput::ZERO; Z],
-        status: StepStatus::Ok,
     };
 
+    /// The same output with its rollers as a slice, whatever `Z`.
+    pub fn view(&self) -> OutputView<'_> {
+        OutputView {
+            force_n: self.force_n,
+            moment_nm: self.moment_nm,
+            stiffness: self.stiffness,
+            damping_n_s_per_m: self.damping_n_s_per_m,
+            rollers: &self.rollers,
+        }
+    }
+
+    /// The 2×2 radial stiffness block −∂(F_x, F_y)/∂(x, y) (N/m).
+    pub fn radial_stiffness_n_per_m(&self) -> [[f32; 2]; 2] {
+        self.view().radial_stiffness_n_per_m()
+    }
+
+    /// Largest roller load (N).
+    pub fn max_roller_load_n(&self) -> f32 {
+        self.view().max_roller_load_n()
+    }
+
+    /// Number of contacts (inner and outer, all rollers) served by `source`.
+    pub fn contacts_served_by(&self, source: FilmSource) -> usize {
+        self.view().contacts_served_by(source)
+    }
+}
+
+/// A [`BearingOutput`] of any roller count: the sums by value, the rollers borrowed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OutputView<'a> {
+    /// Force of the rollers on the inner race [F_x, F_y] (N).
+    pub force_n: [f32; 2],
+    /// Moment of the rollers on the inner race [M_x, M_y] (N·m).
+    pub moment_nm: [f32; 2],
+    /// Stiffness −∂(F_x, F_y, M_x, M_y)/∂(x, y, tilt_x, tilt_y): N/m, N, N·m per rad.
+    pub stiffness: [[f32; 4]; 4],
+    /// Damping −∂(F_x, F_y)/∂(ẋ, ẏ) (N·s/m).
+    pub damping_n_s_per_m: [[f32; 2]; 2],
+    /// Per-roller states, one per roller.
+    pub rollers: &'a [RollerOutput],
+}
+
+impl OutputView<'_> {
     /// The 2×2 radial stiffness block −∂(F_x, F_y)/∂(x, y) (N/m).
     pub fn radial_stiffness_n_per_m(&self) -> [[f32; 2]; 2] {
         let [r0, r1, _, _] = self.stiffness;

@@ -3,14 +3,15 @@
 //! inputs.
 
 use super::*;
+use crate::contact::ContactLaw;
 use crate::film::{FilmSource, Regression};
-use crate::params::Crown;
+use crate::params::{BearingGeometry, Crown, Lubricant, Material};
 use proptest::prelude::*;
 
 const RPM: f32 = core::f32::consts::PI / 30.0;
 
 fn hub_params(clearance_m: f32, crown: Crown) -> BearingParams {
-    // PHYSICS.md §6.2 hub-motor bearing: d_m 60 mm, D 8.8 mm × 15 mm, 17 rollers.
+    // docs/physics.md §6.2 hub-motor bearing: d_m 60 mm, D 8.8 mm × 15 mm, 17 rollers.
     let g = BearingGeometry::new(0.060, 0.0088, 0.015, 17, crown, clearance_m).unwrap();
     let oil = Lubricant::new(0.08, 2.1e-8, 833.8).unwrap();
     BearingParams::new(
@@ -25,7 +26,7 @@ fn hub_params(clearance_m: f32, crown: Crown) -> BearingParams {
 }
 
 fn state(x: f32, y: f32, speed_rpm: f32) -> OperatingState {
-    OperatingState::new([x, y], [0.0; 2], [0.0; 2], speed_rpm * RPM, 0.0).unwrap()
+    OperatingState::new([x, y], [0.0; 2], [0.0; 2], speed_rpm * RPM).unwrap()
 }
 
 #[test]
@@ -46,23 +47,22 @@ fn stribeck_max_roller_load_for_zero_clearance() {
             0.0,
         )
         .unwrap();
-        let mut b = Bearing::<Z, 10>::new(p).unwrap();
+        let mut b = Bearing::<Z, 10>::new(p, FilmKind::Dry).unwrap();
         let f = 5000.0f32;
         // Load along −y with roller 0 on the load line (cage angle −90°).
-        let start = OperatingState::new(
-            [0.0; 2],
-            [0.0; 2],
-            [0.0; 2],
-            0.0,
-            -core::f32::consts::FRAC_PI_2,
-        )
-        .unwrap();
-        let eq = b.static_equilibrium::<Regression>(None, [0.0, -f], &start, 1e-6, 200);
+        b.set_cage_angle(-core::f32::consts::FRAC_PI_2).unwrap();
+        let start = OperatingState::new([0.0; 2], [0.0; 2], [0.0; 2], 0.0).unwrap();
+        let eq = b.static_equilibrium([0.0, -f], &start, 1e-6, 200);
         assert!(eq.converged, "Z={z}: {eq:?}");
-        let out = b.step_dry(&OperatingState {
-            displacement_m: eq.displacement_m,
-            ..start
-        });
+        let out = *b
+            .advance(
+                &OperatingState {
+                    displacement_m: eq.displacement_m,
+                    ..start
+                },
+                0.0,
+            )
+            .unwrap();
         let ratio = out.max_roller_load_n() * z as f32 / f;
         assert!(
             (ratio / 4.08 - 1.0).abs() < 0.10,
@@ -79,16 +79,19 @@ fn stribeck_max_roller_load_for_zero_clearance() {
 
 #[test]
 fn force_is_the_sum_of_roller_loads_and_stiffness_is_its_derivative() {
-    let mut b =
-        Bearing::<17, 10>::new(hub_params(-2.0e-6, Crown::Logarithmic { scale: 1.0 })).unwrap();
-    let s =
-        OperatingState::new([3e-6, -8e-6], [0.0; 2], [1e-4, -2e-4], 12_000.0 * RPM, 0.37).unwrap();
+    let mut b = Bearing::<17, 10>::new(
+        hub_params(-2.0e-6, Crown::Logarithmic { scale: 1.0 }),
+        FilmKind::Regression,
+    )
+    .unwrap();
+    b.set_cage_angle(0.37).unwrap();
+    let s = OperatingState::new([3e-6, -8e-6], [0.0; 2], [1e-4, -2e-4], 12_000.0 * RPM).unwrap();
     // Converge the warm start, then compare the step's stiffness with central differences of
     // its force (each difference also converged from the same warm start).
     for _ in 0..5 {
-        b.step(&Regression, &s);
+        b.advance(&s, 0.0).unwrap();
     }
-    let out = *b.step(&Regression, &s);
+    let out = *b.advance(&s, 0.0).unwrap();
     let fx: f32 = out
         .rollers
         .iter()
@@ -106,9 +109,9 @@ fn force_is_the_sum_of_roller_loads_and_stiffness_is_its_derivative() {
         // step renews one node and starts from the last step's warm start, so its force also
         // depends on the history of the steps).
         let mut b2 = b.clone();
-        let fp = b2.settle(&Regression, &plus, 5).force_n;
+        let fp = b2.settle(&plus, 5).unwrap().force_n;
         let mut b3 = b.clone();
-        let fm = b3.settle(&Regression, &minus, 5).force_n;
+        let fm = b3.settle(&minus, 5).unwrap().force_n;
         for row in 0..2 {
             let fd = -(fp[row] - fm[row]) / (2.0 * h);
             let k = out.stiffness[row][column];
@@ -196,7 +199,7 @@ proptest! {
 
     /// The fixed point meets |Δh|/h ≤ 1e-3 within its fixed work from a converged warm start
     /// at most 0.25 µm of geometric approach away (5 mm/s at 20 kHz), across speeds 0.6–30 m/s
-    /// entrainment and loads up to ≈ 5 kN (PHYSICS.md §5.3), for straight and crowned rollers.
+    /// entrainment and loads up to ≈ 5 kN (docs/physics.md §5.3), for straight and crowned rollers.
     /// (The slices are evaluated once per step, at the approach the last step's film predicts;
     /// what limits the accuracy is that prediction, not the Newton steps. Measured over 3000
     /// cases each, the worst |Δh|/h is 2·10⁻⁵ for jumps up to 0.25 µm, 2·10⁻³ up to 0.5 µm
@@ -215,14 +218,14 @@ proptest! {
         let g = BearingGeometry::new(0.060, 0.0088, 0.015, 17, crown, 0.0).unwrap();
         let oil = Lubricant::new(eta, alpha_gpa * 1e-9, 850.0).unwrap();
         let p = BearingParams::new(g, Material::STEEL, Material::STEEL, oil, ContactLaw::Palmgren, 0.0).unwrap();
-        let mut b = Bearing::<17, 10>::new(p).unwrap();
+        let mut b = Bearing::<17, 10>::new(p, FilmKind::Regression).unwrap();
         let omega = speed_rpm * RPM;
         // Roller 0 at angle 0 sees δ_geo = x. Previous step: a nearby displacement.
         let x = geometric_um * 1e-6;
         // A converged warm start at the previous state (a fresh bearing's first step is a cold
         // start; see the next test), then one step.
-        b.settle(&Regression, &OperatingState::new([x + previous_offset_um * 1e-6, 0.0], [0.0; 2], [0.0; 2], omega, 0.0).unwrap(), SETTLE_STEPS);
-        let out = *b.step(&Regression, &OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega, 0.0).unwrap());
+        b.settle(&OperatingState::new([x + previous_offset_um * 1e-6, 0.0], [0.0; 2], [0.0; 2], omega).unwrap(), SETTLE_STEPS).unwrap();
+        let out = *b.advance(&OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega).unwrap(), 0.0).unwrap();
         let (q_ref, h_ref) = reference_roller(&p, 10, x as f64, omega as f64);
         let r = out.rollers[0];
         prop_assume!(q_ref > 1.0 && q_ref < 5000.0);
@@ -244,13 +247,13 @@ proptest! {
         let g = BearingGeometry::new(0.060, 0.0088, 0.015, 17, crown, 0.0).unwrap();
         let oil = Lubricant::new(eta, 2.1e-8, 850.0).unwrap();
         let p = BearingParams::new(g, Material::STEEL, Material::STEEL, oil, ContactLaw::Palmgren, 0.0).unwrap();
-        let mut b = Bearing::<17, 10>::new(p).unwrap();
+        let mut b = Bearing::<17, 10>::new(p, FilmKind::Regression).unwrap();
         let omega = speed_rpm * RPM;
         let x = geometric_um * 1e-6;
-        let s = OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega, 0.0).unwrap();
+        let s = OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega).unwrap();
         let (q_ref, h_ref) = reference_roller(&p, 10, x as f64, omega as f64);
         prop_assume!(q_ref > 1.0 && q_ref < 5000.0);
-        let r = b.settle(&Regression, &s, SETTLE_STEPS).rollers[0];
+        let r = b.settle(&s, SETTLE_STEPS).unwrap().rollers[0];
         let dh = (r.central_film_in_m as f64 / h_ref - 1.0).abs();
         prop_assert!(dh <= 1e-3, "h {} vs {h_ref} ({dh:.2e}), Q {} vs {q_ref}", r.central_film_in_m, r.load_n);
     }
@@ -264,10 +267,15 @@ proptest! {
             velocity_m_s: [f[2], f[3]],
             tilt_rad: [f[4], f[5]],
             shaft_speed_rad_s: f[6],
-            cage_angle_rad: f[7],
         };
-        let mut b = Bearing::<17, 10>::new(hub_params(-2e-6, Crown::Logarithmic { scale: 1.0 })).unwrap();
-        for out in [*b.step(&Regression, &s), *b.step_dry(&s)] {
+        let p = hub_params(-2e-6, Crown::Logarithmic { scale: 1.0 });
+        let mut b = Bearing::<17, 10>::new(p, FilmKind::Regression).unwrap();
+        let mut dry = Bearing::<17, 10>::new(p, FilmKind::Dry).unwrap();
+        let _ = b.set_cage_angle(f[7]);
+        let _ = dry.set_cage_angle(f[7]);
+        let dt = f32::from_bits(bits[7].rotate_left(7));
+        let computed = [b.advance(&s, dt).ok().copied(), dry.advance(&s, dt).ok().copied()];
+        for out in computed.into_iter().flatten() {
             prop_assert!(out.force_n.iter().chain(out.moment_nm.iter()).all(|v| v.is_finite()));
             prop_assert!(out.stiffness.iter().flatten().all(|v| v.is_finite()));
             prop_assert!(out.rollers.iter().all(|r| r.load_n.is_finite() && r.central_film_in_m.is_finite() && r.central_film_in_m >= 0.0));
@@ -280,10 +288,12 @@ proptest! {
         x in -1e-3f32..1e-3, y in -1e-3f32..1e-3, vx in -100f32..100.0, tx in -0.01f32..0.01,
         speed in -1e5f32..1e5, cage in -1e4f32..1e4,
     ) {
-        let s = OperatingState::new([x, y], [vx, -vx], [tx, -tx], speed, cage).unwrap();
-        let mut b = Bearing::<17, 10>::new(hub_params(-2e-6, Crown::Logarithmic { scale: 1.0 })).unwrap();
-        let out = *b.step(&Regression, &s);
-        prop_assert_eq!(out.status, StepStatus::Ok);
+        let s = OperatingState::new([x, y], [vx, -vx], [tx, -tx], speed).unwrap();
+        let mut b = Bearing::<17, 10>::new(hub_params(-2e-6, Crown::Logarithmic { scale: 1.0 }), FilmKind::Regression).unwrap();
+        b.set_cage_angle(cage).unwrap();
+        let out = b.advance(&s, 1.0e-4);
+        prop_assert!(out.is_ok(), "{:?}", out);
+        let out = *out.unwrap();
         prop_assert!(out.force_n.iter().all(|v| v.is_finite()));
         prop_assert!(out.stiffness.iter().flatten().all(|v| v.is_finite()));
     }
@@ -291,20 +301,24 @@ proptest! {
 
 #[test]
 fn rejected_state_names_the_field_and_keeps_the_warm_start() {
-    let mut b = Bearing::<17, 10>::new(hub_params(-2e-6, Crown::None)).unwrap();
-    b.step(&Regression, &state(0.0, -5e-6, 10_000.0));
+    let mut b =
+        Bearing::<17, 10>::new(hub_params(-2e-6, Crown::None), FilmKind::Regression).unwrap();
+    b.advance(&state(0.0, -5e-6, 10_000.0), 1.0e-4).unwrap();
     let warm = b.memory;
+    let (cage, output) = (b.cage_angle_rad(), *b.output());
     let bad = OperatingState {
         shaft_speed_rad_s: f32::NAN,
         ..state(0.0, -5e-6, 10_000.0)
     };
-    let out = *b.step(&Regression, &bad);
-    match out.status {
-        StepStatus::Rejected(e) => assert_eq!(e.field, "shaft_speed_rad_s"),
-        StepStatus::Ok => panic!("NaN speed accepted"),
-    }
-    assert_eq!(out.force_n, [0.0, 0.0]);
+    let e = b.advance(&bad, 1.0e-4).unwrap_err();
+    assert_eq!(e.field, "shaft_speed_rad_s");
+    let e = b
+        .advance(&state(0.0, -5e-6, 10_000.0), -1.0e-4)
+        .unwrap_err();
+    assert_eq!(e.field, "time_step_s");
     assert_eq!(b.memory, warm);
+    assert_eq!(b.cage_angle_rad(), cage);
+    assert_eq!(*b.output(), output);
 }
 
 #[test]
@@ -312,30 +326,38 @@ fn lubricated_bearing_is_stiffer_than_dry_and_stiffens_with_speed() {
     // Hub-motor bearing (2 µm interference) in equilibrium under 2 kN: with film the rollers
     // are pushed apart, so the contact loads and the stiffness exceed the dry ones and grow with
     // speed (the thesis' headline result).
-    let mut b =
-        Bearing::<17, 10>::new(hub_params(-2.0e-6, Crown::Logarithmic { scale: 1.0 })).unwrap();
+    let p = hub_params(-2.0e-6, Crown::Logarithmic { scale: 1.0 });
+    let mut b = Bearing::<17, 10>::new(p, FilmKind::Regression).unwrap();
+    let mut dry_bearing = Bearing::<17, 10>::new(p, FilmKind::Dry).unwrap();
     let f = [0.0, -2000.0];
     let start = state(0.0, 0.0, 0.0);
-    let dry = b.static_equilibrium::<Regression>(None, f, &start, 1e-5, 200);
+    let dry = dry_bearing.static_equilibrium(f, &start, 1e-5, 200);
     assert!(dry.converged);
-    let dry_out = *b.step_dry(&OperatingState {
-        displacement_m: dry.displacement_m,
-        ..start
-    });
+    let dry_out = *dry_bearing
+        .advance(
+            &OperatingState {
+                displacement_m: dry.displacement_m,
+                ..start
+            },
+            0.0,
+        )
+        .unwrap();
     let mut previous_k = dry_out.stiffness[1][1];
     let mut previous_sum: f32 = dry_out.rollers.iter().map(|r| r.load_n).sum();
     for rpm in [3_000.0f32, 9_000.0, 15_000.0, 21_000.0] {
         let s = state(0.0, 0.0, rpm);
         b.reset();
-        let eq = b.static_equilibrium(Some(&Regression), f, &s, 1e-5, 200);
+        let eq = b.static_equilibrium(f, &s, 1e-5, 200);
         assert!(eq.converged, "{rpm} rpm: {eq:?}");
-        let out = *b.step(
-            &Regression,
-            &OperatingState {
-                displacement_m: eq.displacement_m,
-                ..s
-            },
-        );
+        let out = *b
+            .advance(
+                &OperatingState {
+                    displacement_m: eq.displacement_m,
+                    ..s
+                },
+                0.0,
+            )
+            .unwrap();
         let k = out.stiffness[1][1];
         let sum: f32 = out.rollers.iter().map(|r| r.load_n).sum();
         assert!(k > previous_k, "{rpm} rpm: K_yy {k} not above {previous_k}");
@@ -359,22 +381,28 @@ fn roller_force_is_continuous_across_the_ehl_hydrodynamic_transition() {
     // steps, warm-starting each step from the last, and check that no
     // step changes the roller force by more than 1 % of the local load beyond the change that
     // the local stiffness predicts.
-    let mut b = Bearing::<17, 10>::new(hub_params(0.0, Crown::Logarithmic { scale: 1.0 })).unwrap();
+    let mut b = Bearing::<17, 10>::new(
+        hub_params(0.0, Crown::Logarithmic { scale: 1.0 }),
+        FilmKind::Regression,
+    )
+    .unwrap();
     let omega = 10_000.0 * RPM;
     let mut previous: Option<(f32, f32)> = None;
     let mut saw_hydrodynamic = false;
     let mut saw_ehl = false;
     let mut x = 3.0e-6f32;
     b.settle(
-        &Regression,
-        &OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega, 0.0).unwrap(),
+        &OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega).unwrap(),
         3,
-    );
+    )
+    .unwrap();
     while x > -40.0e-6 {
-        let out = *b.step(
-            &Regression,
-            &OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega, 0.0).unwrap(),
-        );
+        let out = *b
+            .advance(
+                &OperatingState::new([x, 0.0], [0.0; 2], [0.0; 2], omega).unwrap(),
+                0.0,
+            )
+            .unwrap();
         let r = out.rollers[0];
         saw_hydrodynamic |= r.regime_in == Regime::RigidIsoviscous;
         saw_ehl |= matches!(
@@ -400,8 +428,8 @@ fn roller_force_is_continuous_across_the_ehl_hydrodynamic_transition() {
 fn dry_bearing_matches_the_slicing_law_roller_by_roller() {
     // Dry: Q_j is the slice law at the geometric approach, no iteration involved.
     let p = hub_params(-2e-6, Crown::None);
-    let mut b = Bearing::<17, 10>::new(p).unwrap();
-    let out = *b.step_dry(&state(4e-6, 0.0, 0.0));
+    let mut b = Bearing::<17, 10>::new(p, FilmKind::Dry).unwrap();
+    let out = *b.advance(&state(4e-6, 0.0, 0.0), 0.0).unwrap();
     let roller =
         SlicedRoller::<10>::new(p.geometry(), p.reduced_modulus_pa(), ContactLaw::Palmgren);
     for r in out.rollers.iter() {
@@ -419,12 +447,12 @@ fn dry_bearing_matches_the_slicing_law_roller_by_roller() {
 #[test]
 fn dry_bearing_lanes_are_the_one_roller_pass_bit_for_bit() {
     let p = hub_params(-2e-6, Crown::Logarithmic { scale: 1.0 });
-    let mut b = Bearing::<17, 10>::new(p).unwrap();
+    let mut b = Bearing::<17, 10>::new(p, FilmKind::Dry).unwrap();
     let roller =
         SlicedRoller::<10>::new(p.geometry(), p.reduced_modulus_pa(), ContactLaw::Palmgren);
     let (mut loaded, mut separated) = (0, 0);
     for (x, y) in [(9e-6, 0.0), (-3e-6, 7e-6), (2e-5, -1e-5)] {
-        let out = *b.step_dry(&state(x, y, 0.0));
+        let out = *b.advance(&state(x, y, 0.0), 0.0).unwrap();
         for r in out.rollers.iter() {
             let one = roller.evaluate(r.geometric_approach_m, 0.0);
             assert_eq!(r.load_n.to_bits(), one.load_n.to_bits(), "{r:?}");
@@ -449,9 +477,9 @@ fn dry_bearing_lanes_are_the_one_roller_pass_bit_for_bit() {
 
 #[test]
 fn roller_count_must_match_the_const_generic() {
-    let e = Bearing::<12, 10>::new(hub_params(0.0, Crown::None)).unwrap_err();
+    let e = Bearing::<12, 10>::new(hub_params(0.0, Crown::None), FilmKind::Dry).unwrap_err();
     assert_eq!(e.field, "roller_count");
-    let e = Bearing::<17, 0>::new(hub_params(0.0, Crown::None)).unwrap_err();
+    let e = Bearing::<17, 0>::new(hub_params(0.0, Crown::None), FilmKind::Dry).unwrap_err();
     assert_eq!(e.field, "slice_count");
 }
 
@@ -476,10 +504,13 @@ impl crate::film::FilmModel for Limited {
 
 #[test]
 fn rollers_outside_the_served_loads_are_flagged_as_fallback() {
-    let mut b =
-        Bearing::<17, 10>::new(hub_params(-2.0e-6, Crown::Logarithmic { scale: 1.0 })).unwrap();
+    let mut b = Bearing::<17, 10>::new(
+        hub_params(-2.0e-6, Crown::Logarithmic { scale: 1.0 }),
+        FilmKind::Regression,
+    )
+    .unwrap();
     let s = state(0.0, -8.0e-6, 6_000.0);
-    let out = *b.settle(&Limited, &s, SETTLE_STEPS);
+    let out = b.settle_with(&Limited, &s, SETTLE_STEPS);
     let mut seen = (false, false);
     for r in out.rollers.iter() {
         let inside = r.load_n >= 100.0 && r.load_n <= 2000.0;
@@ -498,7 +529,7 @@ fn rollers_outside_the_served_loads_are_flagged_as_fallback() {
         "the case must have rollers on both sides of the interval"
     );
     // The same bearing at standstill reports no film source at all.
-    let out = *b.settle(&Limited, &state(0.0, -8.0e-6, 0.0), SETTLE_STEPS);
+    let out = b.settle_with(&Limited, &state(0.0, -8.0e-6, 0.0), SETTLE_STEPS);
     assert!(out
         .rollers
         .iter()

@@ -1,4 +1,4 @@
-//! Hertz line contact (PHYSICS.md §1).
+//! Hertz line contact (docs/physics.md §1).
 
 use crate::math::sqrt;
 

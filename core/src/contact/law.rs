@@ -3,7 +3,7 @@
 //! The laws give the load per unit length `w` (N/m) that a roller carries for a total approach
 //! `δ` (m) of both raceway contacts in series. Written per unit length, a slice of length
 //! `l/n_s` carries `q = (l/n_s)·w(δ)`, so a uniformly loaded roller gives the same total load for
-//! any slice count — the trap of the per-slice constant that PHYSICS.md §3 warns about.
+//! any slice count — the trap of the per-slice constant that docs/physics.md §3 warns about.
 //!
 //! * [`ContactLaw::Palmgren`] (default): Palmgren's empirical steel law per contact,
 //!   δ = 3.84·10⁻⁵ Q^0.9 / l^0.8 (mm, N) (Palmgren, *Ball and Roller Bearing Engineering*, 1959;

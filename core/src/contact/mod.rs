@@ -1,7 +1,7 @@
 //! Roller–race line contact: Hertz figures, the load–approach law and slicing.
 //!
 //! A roller is cut into slices along its length; each slice carries a line-contact load that
-//! depends on its own approach, which includes the roller's tilt and crown (PHYSICS.md §3).
+//! depends on its own approach, which includes the roller's tilt and crown (docs/physics.md §3).
 
 mod hertz;
 mod law;

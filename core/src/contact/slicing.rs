@@ -1,4 +1,4 @@
-//! Slicing: the load, moment and stiffness of one roller from its slices (PHYSICS.md §3).
+//! Slicing: the load, moment and stiffness of one roller from its slices (docs/physics.md §3).
 //!
 //! Slice k (centre x_k from the roller middle, length l/n_s) sees the approach
 //! δ_k = δ + x_k·ψ − 2·P(x_k), with δ the roller's approach at its middle, ψ its tilt relative to

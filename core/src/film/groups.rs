@@ -1,4 +1,4 @@
-//! Dimensionless groups of a line contact (PHYSICS.md §1), in logarithms.
+//! Dimensionless groups of a line contact (docs/physics.md §1), in logarithms.
 //!
 //! The film models work with ln W, ln U, ln G (and Moes' ln M, ln L), which turns every
 //! power-law formula into a sum and keeps the cost fixed.

@@ -3,7 +3,7 @@
 //! Martin's solution with the Reynolds exit condition (Martin 1916; Hamrock, *Fundamentals of
 //! Fluid Film Lubrication*, §21.2): a rigid cylinder on a plane with gap h₀ at the outlet carries
 //! w = 4.896·η₀u_mR/h₀ per unit length, i.e. h₀/R = 4.896·U/W. At X = 0 the film is
-//! h_c/R = 6·U/W, Moes' rigid iso-viscous asymptote H_RI = 3/M (PHYSICS.md §5.1).
+//! h_c/R = 6·U/W, Moes' rigid iso-viscous asymptote H_RI = 3/M (docs/physics.md §5.1).
 
 use super::{ContactInput, Film, FilmModel, FilmSource, ServedLoads};
 

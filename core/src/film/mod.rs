@@ -6,13 +6,13 @@
 //! thickness? The bearing step only talks to the trait, so a model can be swapped without
 //! touching the bearing code.
 //!
-//! Conventions are those of PHYSICS.md §1: `E'` is the reduced modulus
+//! Conventions are those of docs/physics.md §1: `E'` is the reduced modulus
 //! `2 / [(1−ν₁²)/E₁ + (1−ν₂²)/E₂]`, `R` the reduced radius in the rolling direction,
 //! loads are per roller (N) over the effective length `l` (m).
 
 pub mod ann;
 
-/// Everything the isothermal line-contact film depends on (PHYSICS.md §5.3: solid density and
+/// Everything the isothermal line-contact film depends on (docs/physics.md §5.3: solid density and
 /// Poisson's ratio do not enter once `E'` is given).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContactInput {
@@ -71,7 +71,7 @@ impl Film {
 /// A film thickness model for a loaded line contact.
 ///
 /// The film is the *complete* isothermal film of the contact at any load, as the numerical
-/// solver of PHYSICS.md §5.2 would give it: elastic–piezoviscous where the contact is loaded,
+/// solver of docs/physics.md §5.2 would give it: elastic–piezoviscous where the contact is loaded,
 /// tending to Martin's rigid iso-viscous film (h_c/R = 6U/W) as the load vanishes. The bearing's
 /// film–load coupling relies on that rise at light load for a continuous separation of the
 /// rollers (`bearing::coupling`); a model of the EHL regime alone blends itself with Martin's

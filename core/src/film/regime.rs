@@ -1,4 +1,4 @@
-//! Lubrication regime of a contact from the Moes asymptotes (PHYSICS.md §4, §5.1).
+//! Lubrication regime of a contact from the Moes asymptotes (docs/physics.md §4, §5.1).
 //!
 //! Moes' formula combines four asymptotic solutions: rigid/elastic × iso-/piezo-viscous,
 //! H_RI = 3/M, H_EI = 2.621·M^−1/5, H_RP = 1.287·L^2/3, H_EP = 1.311·M^−1/8·L^3/4. The

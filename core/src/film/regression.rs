@@ -1,4 +1,4 @@
-//! Regression ("analytical") film formulas for line contacts (PHYSICS.md §5.1).
+//! Regression ("analytical") film formulas for line contacts (docs/physics.md §5.1).
 //!
 //! * Dowson–Toyoda central film: h_c/R = 3.06·G^0.56·U^0.69·W^−0.10
 //!   (Dowson & Toyoda 1979; Hamrock, *Fundamentals of Fluid Film Lubrication*, eq. 21.59).
@@ -40,7 +40,7 @@ pub fn dowson_higginson_minimum_m(g: &LnGroups, reduced_radius_m: f32) -> f32 {
 }
 
 /// Moes' central film H_c = (h_c/R)(2U)^−1/2 for Moes parameters M, L (Barus, incompressible),
-/// PHYSICS.md §5.1 (Moes 1992; Venner & Lubrecht, *Multilevel Methods in Lubrication*, 2000,
+/// docs/physics.md §5.1 (Moes 1992; Venner & Lubrecht, *Multilevel Methods in Lubrication*, 2000,
 /// eq. 8.2): H_c = [(H_RI^(7/3) + H_EI^(7/3))^(3s/7) + (H_RP^(−7/2) + H_EP^(−7/2))^(−2s/7)]^(1/s).
 pub fn moes_central(m: f32, l: f32) -> f32 {
     let h_ri = 3.0 / m;

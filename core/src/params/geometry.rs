@@ -1,4 +1,4 @@
-//! Cylindrical roller bearing geometry (PHYSICS.md §2, §3).
+//! Cylindrical roller bearing geometry (docs/physics.md §2, §3).
 
 use crate::error::{in_range, positive, Allowed, ParamError};
 
@@ -11,7 +11,7 @@ pub enum Crown {
     /// Straight roller: no crown drop.
     None,
     /// Logarithmic profile of ISO/TS 16281, multiplied by `scale` (1.0 = the standard):
-    /// drop P(x) = scale · 0.00035 · D · ln[1 / (1 − (2x/l)²)] (PHYSICS.md §3; the formula is
+    /// drop P(x) = scale · 0.00035 · D · ln[1 / (1 − (2x/l)²)] (docs/physics.md §3; the formula is
     /// dimensionally homogeneous, so it holds in metres as in millimetres).
     Logarithmic {
         /// Multiplier on the ISO/TS 16281 profile (0 … 10).

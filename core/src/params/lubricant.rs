@@ -2,7 +2,7 @@
 
 use crate::error::{in_range, ParamError};
 
-/// A Newtonian, isothermal lubricant (PHYSICS.md §5).
+/// A Newtonian, isothermal lubricant (docs/physics.md §5).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Lubricant {
     viscosity_pa_s: f32,
@@ -53,7 +53,7 @@ mod tests {
 
     #[test]
     fn accepts_the_reference_oil_and_names_bad_fields() {
-        // PHYSICS.md §6.1: α = 2.1e-8 1/Pa, η₀ = 0.08 Pa·s, ρ₀ = 833.8 kg/m³.
+        // docs/physics.md §6.1: α = 2.1e-8 1/Pa, η₀ = 0.08 Pa·s, ρ₀ = 833.8 kg/m³.
         assert!(Lubricant::new(0.08, 2.1e-8, 833.8).is_ok());
         assert_eq!(
             Lubricant::new(0.0, 2.1e-8, 833.8).unwrap_err().field,

@@ -41,7 +41,7 @@ impl Material {
     }
 }
 
-/// Reduced modulus E' = 2 / [(1−ν₁²)/E₁ + (1−ν₂²)/E₂] (Pa), PHYSICS.md §1 (Hamrock, Dowson,
+/// Reduced modulus E' = 2 / [(1−ν₁²)/E₁ + (1−ν₂²)/E₂] (Pa), docs/physics.md §1 (Hamrock, Dowson,
 /// Venner, Moes; Johnson's E* is E'/2). Steel on steel gives 230.8 GPa.
 pub fn reduced_modulus(a: &Material, b: &Material) -> f32 {
     2.0 / (a.compliance() + b.compliance())
@@ -53,7 +53,7 @@ mod tests {
 
     #[test]
     fn steel_on_steel_reduced_modulus_is_230_8_gpa() {
-        // PHYSICS.md §1: E = 210 GPa, ν = 0.3 → E' = 210/(1 − 0.09) = 230.77 GPa.
+        // docs/physics.md §1: E = 210 GPa, ν = 0.3 → E' = 210/(1 − 0.09) = 230.77 GPa.
         let e = reduced_modulus(&Material::STEEL, &Material::STEEL);
         assert!((e / 230.769e9 - 1.0).abs() < 1e-5, "{e}");
     }

@@ -8,16 +8,22 @@ pub const MAX_DISPLACEMENT_M: f32 = 1.0e-3;
 pub const MAX_VELOCITY_M_S: f32 = 100.0;
 /// Largest tilt accepted (rad).
 pub const MAX_TILT_RAD: f32 = 0.01;
-/// Largest cage angle accepted (rad); wrap the angle into [0, 2π) as it grows.
+/// Largest cage angle [`Bearing::set_cage_angle`](crate::Bearing::set_cage_angle) accepts
+/// (rad); the bearing wraps it into [0, 2π) and keeps it there as it advances.
 pub const MAX_CAGE_ANGLE_RAD: f32 = 1.0e4;
+/// Largest time step accepted (s): the cage then turns at most 5·10⁴ rad in one step, which
+/// f32 still resolves to 4 mrad before the angle is wrapped.
+pub const MAX_TIME_STEP_S: f32 = 1.0;
 /// Largest shaft speed accepted (rad/s), ≈ 955 000 rpm.
 pub const MAX_SHAFT_SPEED_RAD_S: f32 = 1.0e5;
 
-/// Inner-race kinematics and shaft speed at one instant; the outer race is fixed.
+/// Inner-race kinematics and shaft speed at one instant; the outer race is fixed. The cage
+/// angle is not part of it: the bearing integrates it from the shaft speed
+/// ([`Bearing::advance`](crate::Bearing::advance)).
 ///
 /// The fields are public so a sample can be filled in place in a real-time loop; the bearing
-/// step checks them with [`OperatingState::check`] and refuses (flags) a bad one rather than
-/// computing with it. [`OperatingState::new`] checks at construction.
+/// checks them with [`OperatingState::check`] and refuses a bad one (an `Err` naming the
+/// field) rather than computing with it. [`OperatingState::new`] checks at construction.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct OperatingState {
     /// Inner-race displacement [x, y] in the bearing plane (m).
@@ -28,8 +34,6 @@ pub struct OperatingState {
     pub tilt_rad: [f32; 2],
     /// Shaft (inner-ring) speed ω (rad/s); the sign gives the direction.
     pub shaft_speed_rad_s: f32,
-    /// Cage angle θ_c (rad): roller j sits at θ_c + 2πj/Z (PHYSICS.md §2).
-    pub cage_angle_rad: f32,
 }
 
 impl OperatingState {
@@ -39,14 +43,12 @@ impl OperatingState {
         velocity_m_s: [f32; 2],
         tilt_rad: [f32; 2],
         shaft_speed_rad_s: f32,
-        cage_angle_rad: f32,
     ) -> Result<Self, ParamError> {
         let state = Self {
             displacement_m,
             velocity_m_s,
             tilt_rad,
             shaft_speed_rad_s,
-            cage_angle_rad,
         };
         state.check()?;
         Ok(state)
@@ -79,12 +81,6 @@ impl OperatingState {
             -MAX_SHAFT_SPEED_RAD_S,
             MAX_SHAFT_SPEED_RAD_S,
         )?;
-        in_range(
-            "cage_angle_rad",
-            self.cage_angle_rad,
-            -MAX_CAGE_ANGLE_RAD,
-            MAX_CAGE_ANGLE_RAD,
-        )?;
         Ok(())
     }
 }
@@ -95,11 +91,10 @@ mod tests {
 
     #[test]
     fn names_the_bad_field() {
-        let e = OperatingState::new([0.0, f32::NAN], [0.0; 2], [0.0; 2], 100.0, 0.0).unwrap_err();
+        let e = OperatingState::new([0.0, f32::NAN], [0.0; 2], [0.0; 2], 100.0).unwrap_err();
         assert_eq!(e.field, "displacement_y_m");
-        let e =
-            OperatingState::new([0.0; 2], [0.0; 2], [0.0; 2], 100.0, f32::INFINITY).unwrap_err();
-        assert_eq!(e.field, "cage_angle_rad");
-        assert!(OperatingState::new([1e-5, 0.0], [0.0; 2], [0.0; 2], 2199.0, 0.3).is_ok());
+        let e = OperatingState::new([0.0; 2], [0.0; 2], [0.0; 2], f32::INFINITY).unwrap_err();
+        assert_eq!(e.field, "shaft_speed_rad_s");
+        assert!(OperatingState::new([1e-5, 0.0], [0.0; 2], [0.0; 2], 2199.0).is_ok());
     }
 }

@@ -2,7 +2,7 @@
 //! the film-network bench (`benches/qemu-film-ann`).
 //!
 //! QEMU does not implement the DWT cycle counter (it reads 0 while claiming to exist,
-//! EMBEDDED.md). With `-icount shift=0` every guest instruction advances virtual time by
+//! docs/embedded.md). With `-icount shift=0` every guest instruction advances virtual time by
 //! exactly 1 ns, so any timer clocked from virtual time counts instructions deterministically.
 //! Two are read here:
 //!

@@ -21,9 +21,9 @@ pub const MAX_ROLLERS: usize = 32;
 /// The bearing-step outputs. Only the first `rollers` entries of each array are meaningful.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepOutputs {
-    /// Force of the rollers on the inner race, (F_x, F_y) (N), PHYSICS.md §4.
+    /// Force of the rollers on the inner race, (F_x, F_y) (N), docs/physics.md §4.
     pub force_n: [f32; 2],
-    /// Cage angle θ_c (rad): roller j sits at θ_c + 2πj/Z (PHYSICS.md §2). The accuracy
+    /// Cage angle θ_c (rad): roller j sits at θ_c + 2πj/Z (docs/physics.md §2). The accuracy
     /// reference needs it to put the rollers where the stepper had them.
     pub cage_angle_rad: f32,
     /// Number of rollers, Z.

@@ -3,7 +3,7 @@
 use super::check_range;
 use anyhow::{anyhow, Result};
 use bearing_hil::qemu::{self, QemuOptions};
-use bearing_hil::replay::FilmChoice;
+use bearing_hil::replay::{film_arg, FilmKind};
 use bearing_hil::wiring;
 use clap::Args;
 use std::path::PathBuf;
@@ -26,8 +26,8 @@ pub struct QemuArgs {
     #[arg(long, default_value_t = 30_000)]
     pub max_instructions: u32,
     /// Film model of the bearing step.
-    #[arg(long, value_enum, default_value_t = FilmChoice::Int)]
-    pub film: FilmChoice,
+    #[arg(long, value_parser = film_arg(), default_value_t = FilmKind::Int)]
+    pub film: FilmKind,
     /// Print the JSON report.
     #[arg(long)]
     pub json: bool,
@@ -48,7 +48,7 @@ pub fn run(args: &QemuArgs) -> Result<ExitCode> {
         report_dir: args.report.clone(),
         timeout: Duration::from_secs_f64(timeout_s),
         max_instructions: args.max_instructions,
-        film: args.film.kind(),
+        film: args.film,
     };
     if !args.json {
         eprintln!("building the firmware and running it under QEMU…");

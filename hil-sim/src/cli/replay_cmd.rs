@@ -7,7 +7,7 @@ use bearing_hil::realtime::Realtime;
 use bearing_hil::replay::engine::Parts;
 use bearing_hil::replay::report::ReplayReport;
 use bearing_hil::replay::stats::Limits;
-use bearing_hil::replay::{plots, replay, FilmChoice, ReplayConfig};
+use bearing_hil::replay::{film_arg, plots, replay, FilmKind, ReplayConfig};
 use bearing_hil::trace::{Trace, ValidationOptions};
 use bearing_hil::wiring;
 use clap::Args;
@@ -27,8 +27,8 @@ pub struct ReplayArgs {
     #[arg(long, default_value_t = Limits::default().budget_us, allow_hyphen_values = true)]
     pub budget_us: f64,
     /// Film model of the bearing step.
-    #[arg(long, value_enum, default_value_t = FilmChoice::Int)]
-    pub film: FilmChoice,
+    #[arg(long, value_parser = film_arg(), default_value_t = FilmKind::Int)]
+    pub film: FilmKind,
     /// Recompute every K-th sample with the full numerical solver (0: no accuracy check). Each
     /// point solves every loaded contact's film–load coupling numerically (≈ 20–30 s on one core
     /// for the 17-roller hub bearing), hence the sparse default.
@@ -106,7 +106,7 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
     // A second, identical stepper that warms the caches before the timed loop (engine doc);
     // it needs neither the dry model nor the reference.
     let mut warm_up =
-        wiring::primed_stepper(&trace.meta, args.film.kind(), first).map_err(|e| anyhow!(e))?;
+        wiring::primed_stepper(&trace.meta, args.film, first).map_err(|e| anyhow!(e))?;
     // The request is checked in every mode, `off` included: a CPU or priority no machine can
     // grant is a mistake on the command line whatever the policy asked for.
     let default = Realtime::default_for_this_machine();

@@ -392,7 +392,7 @@ fn accuracy_pass(
         let mut film_max: Option<f64> = None;
         for j in 0..rollers {
             // A loaded contact: the reference roller load is positive. Both contacts of a
-            // roller carry the same load (PHYSICS.md §4), each with its own film.
+            // roller carry the same load (docs/physics.md §4), each with its own film.
             if truth.roller_load_n[j].is_nan() || truth.roller_load_n[j] <= 0.0 {
                 continue;
             }

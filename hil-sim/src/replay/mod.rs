@@ -5,7 +5,7 @@
 //! model, e.g. the core's bearing step with one film model) and optionally to an
 //! [`AccuracyReference`] (the same bearing state recomputed with the numerical EHL solver in
 //! every loaded contact, f64) and a second stepper running the dry model (h ≡ 0), whose error
-//! against the reference shows what the film buys (PHYSICS.md §4). `crate::wiring` builds the
+//! against the reference shows what the film buys (docs/physics.md §4). `crate::wiring` builds the
 //! product's stepper and reference; tests use closed-form doubles.
 //!
 //! [`engine`] runs the timed loop (free-running or paced at wall-clock rate), then [`pauses`]
@@ -29,30 +29,14 @@ pub use engine::{replay, ReplayConfig, ReplayRun};
 use crate::trace::Sample;
 use std::fmt;
 
-/// The film model the stepper uses (`--film`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum FilmChoice {
-    /// The integer (quantised) neural network, with its regression fallback.
-    Int,
-    /// The f32 neural network, with its regression fallback.
-    F32,
-    /// The regression formulas only.
-    Regression,
-    /// No film (h ≡ 0): today's commercial practice.
-    Dry,
-}
+/// The film model the stepper uses (`--film`): the core's choice, by name.
+pub use bearing_core::FilmKind;
 
-impl FilmChoice {
-    /// The name used on the command line and in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            FilmChoice::Int => "int",
-            FilmChoice::F32 => "f32",
-            FilmChoice::Regression => "regression",
-            FilmChoice::Dry => "dry",
-        }
-    }
+/// The parser of a `--film` argument: one of the names of [`FilmKind`], listed in `--help`.
+pub fn film_arg() -> impl clap::builder::TypedValueParser<Value = FilmKind> {
+    use clap::builder::TypedValueParser as _;
+    clap::builder::PossibleValuesParser::new(FilmKind::ALL.map(FilmKind::name))
+        .try_map(|name| name.parse::<FilmKind>())
 }
 
 /// Why a step or a reference computation failed.

@@ -10,7 +10,7 @@
 use super::engine::{Pacing, ReplayConfig, ReplayRun, SourceCounts};
 use super::pauses::PauseSummary;
 use super::stats::{accuracy_verdict, budget_verdict, percentile, Limits, StepTimeStats};
-use super::FilmChoice;
+use super::FilmKind;
 use crate::realtime::Realtime;
 use crate::trace::TraceMeta;
 use serde::Serialize;
@@ -45,7 +45,7 @@ pub struct ReplayReport {
     /// Lubricant identifier of the trace.
     pub lubricant: String,
     /// Film model of the stepper.
-    pub film: FilmChoice,
+    pub film: FilmKind,
     /// Stepper name.
     pub stepper: String,
     /// Step rate (Hz).
@@ -80,7 +80,7 @@ impl ReplayReport {
     /// Builds the report and its verdicts.
     pub fn build(
         meta: &TraceMeta,
-        film: FilmChoice,
+        film: FilmKind,
         stepper: String,
         config: &ReplayConfig,
         run: &ReplayRun,

@@ -1,6 +1,6 @@
 //! Tests of the replay engine with closed-form test doubles (not the product's model).
 //!
-//! The doubles implement the slicing-free form of PHYSICS.md §4 on a 17-roller bearing: rollers
+//! The doubles implement the slicing-free form of docs/physics.md §4 on a 17-roller bearing: rollers
 //! at θ_c + 2πj/Z, approach δ_j = x cos θ_j + y sin θ_j − g_r + 2h, a Palmgren-type load
 //! Q = K δ^(10/9), a film depending on speed only (so there is no fixed point), and the force
 //! −Σ Q (cos θ, sin θ). The stepper computes in f32, the reference the same formulas in f64, so
@@ -15,15 +15,15 @@ use crate::trace::synthetic::Whirl;
 use crate::trace::{Trace, TraceMeta};
 
 const Z: usize = 17;
-/// Load constant K (N/m^(10/9)), of the order of PHYSICS.md §3's Palmgren law for l = 15 mm.
+/// Load constant K (N/m^(10/9)), of the order of docs/physics.md §3's Palmgren law for l = 15 mm.
 const K: f64 = 8.0e9;
 /// Radial clearance g_r (m): the hub-motor bearing's 2 µm interference.
 const CLEARANCE: f64 = -2.0e-6;
-/// Cage speed ratio (1 − γ)/2 for d_m = 60 mm, D = 8.8 mm (PHYSICS.md §2).
+/// Cage speed ratio (1 − γ)/2 for d_m = 60 mm, D = 8.8 mm (docs/physics.md §2).
 const CAGE_RATIO: f64 = 0.5 * (1.0 - 8.8 / 60.0);
 
 /// Film of the double (m): 0.2 µm at 1000 rad/s, growing like ω^0.7 (the speed exponent of
-/// Dowson–Toyoda, PHYSICS.md §5.1).
+/// Dowson–Toyoda, docs/physics.md §5.1).
 fn film_m(speed: f64) -> f64 {
     2.0e-7 * (speed.abs() / 1000.0).powf(0.7)
 }
@@ -246,7 +246,7 @@ fn exact_reference_passes_and_the_dry_model_is_worse() {
     assert_eq!(run.step_times_ns.len(), 500);
     assert_eq!(run.points.len(), 500_usize.div_ceil(7));
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, stepper.name(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, stepper.name(), &cfg, &run).unwrap();
     assert!(report.film_contacts_compared > 0);
     // f32 against f64 of the same formulas: rounding only.
     assert!(report.film_rel_err_p99.unwrap() < 1e-5, "{report:?}");
@@ -315,7 +315,7 @@ fn a_film_off_by_five_percent_fails_accuracy_with_the_reason() {
     )
     .unwrap();
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     assert!(
         (report.film_rel_err_p99.unwrap() - 0.05).abs() < 1e-5,
         "{report:?}"
@@ -337,7 +337,7 @@ fn without_reference_accuracy_is_not_checked() {
     let cfg = config(0, false, 10_000.0);
     let run = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap();
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     assert_eq!(report.accuracy_ok, None);
     assert_eq!(report.film_rel_err_p99, None);
 }
@@ -433,7 +433,7 @@ fn realtime_scheduling_covers_the_timed_loop_only() {
         Ok(run) => {
             assert_eq!(run.realtime, Some(request));
             let report =
-                ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run)
+                ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run)
                     .unwrap();
             assert_eq!(report.realtime, Some(request));
             assert!(report
@@ -483,7 +483,7 @@ fn refused_realtime_falls_back_when_asked() {
     let reason = run.realtime_refused.clone().unwrap();
     assert!(reason.contains("does not exist"), "{reason}");
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     assert_eq!(report.realtime_refused.as_deref(), Some(reason.as_str()));
     assert!(report.markdown().contains(&format!(
         "ordinary scheduling policy (real-time scheduling refused: {reason})"
@@ -522,20 +522,14 @@ fn warm_up_steps_a_second_stepper_only() {
     assert_eq!(with.outputs, without.outputs);
     assert_eq!(without.cold_step_ns, None);
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &with).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &with).unwrap();
     assert_eq!(report.cold_step_ns, with.cold_step_ns);
     assert!(report.cold_step_ns.is_some());
     assert!(report.markdown().contains(&format!(
         "Warm-up: a second stepper took {WARM_UP_STEPS} untimed steps"
     )));
-    let no_warm_up = ReplayReport::build(
-        &trace.meta,
-        FilmChoice::Int,
-        "double".into(),
-        &cfg,
-        &without,
-    )
-    .unwrap();
+    let no_warm_up =
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &without).unwrap();
     assert!(!no_warm_up.markdown().contains("Warm-up"));
 }
 
@@ -560,7 +554,7 @@ fn pause_probe_reaches_the_report() {
     let probe = run.pauses.clone().unwrap();
     assert!(probe.duration_ns >= 20_000_000);
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     let env = report.environment.unwrap();
     assert_eq!(env.threshold_ns, super::pauses::MIN_PAUSE_NS);
     assert_eq!(env.pauses, probe.gaps_ns.len());
@@ -581,7 +575,7 @@ fn pause_probe_reaches_the_report() {
     let run = replay_stepper_only(&trace, &mut stepper, &cfg).unwrap();
     assert_eq!(run.pauses, None);
     let report =
-        ReplayReport::build(&trace.meta, FilmChoice::Int, "double".into(), &cfg, &run).unwrap();
+        ReplayReport::build(&trace.meta, FilmKind::Int, "double".into(), &cfg, &run).unwrap();
     assert_eq!(report.environment, None);
     assert!(!report.markdown().contains("Machine pauses"));
 }

@@ -8,7 +8,7 @@ use super::wire::{is_identifier_byte, Sample, FIELD_NAMES, IDENTIFIER_LEN};
 use super::{Location, Problem, Trace, TraceError, TraceMeta};
 
 /// Highest sample rate accepted (Hz). 10 MHz is far above any recorder of shaft kinematics
-/// (the rig of PHYSICS.md §6.1 sampled at 100 kHz); it keeps 1/rate well above f64 rounding
+/// (the rig of docs/physics.md §6.1 sampled at 100 kHz); it keeps 1/rate well above f64 rounding
 /// of the time stamps of a long trace.
 pub const MAX_SAMPLE_RATE_HZ: f64 = 1.0e7;
 

@@ -1,12 +1,12 @@
 //! CLI behaviour of `bearing ehl compare`: its ratios are the film of `bearing ehl solve` over
-//! the formula computed here from PHYSICS.md §5.1, and bad numbers exit non-zero naming the flag.
+//! the formula computed here from docs/physics.md §5.1, and bad numbers exit non-zero naming the flag.
 
 // Each test file compiles `common` on its own; this one uses only `bearing`.
 #[allow(dead_code)]
 mod common;
 use common::bearing;
 
-/// Moes' central film in Moes units (PHYSICS.md §5.1), written out independently of the
+/// Moes' central film in Moes units (docs/physics.md §5.1), written out independently of the
 /// library's `formulas` module.
 fn moes_central(m: f64, l: f64) -> f64 {
     let (ri, ei) = (3.0 / m, 2.621 * m.powf(-0.2));
@@ -45,7 +45,7 @@ fn moes_ratios_are_solve_over_the_formula() {
         assert!(ok, "{err}");
         let s: serde_json::Value = serde_json::from_str(&out).unwrap();
         let f = |x: &serde_json::Value| x.as_f64().unwrap();
-        // R from the Hertz half-width b = R √(8W/π); h = H (2U)^½ R (PHYSICS.md §1, §5.1).
+        // R from the Hertz half-width b = R √(8W/π); h = H (2U)^½ R (docs/physics.md §1, §5.1).
         let (w, u) = (f(&row["w"]), f(&row["u"]));
         let r = f(&s["hertz_half_width_m"]) / (8.0 * w / std::f64::consts::PI).sqrt();
         let moes_m = moes_central(100.0, l.parse().unwrap()) * (2.0 * u).sqrt() * r;

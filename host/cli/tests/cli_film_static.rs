@@ -28,7 +28,7 @@ fn film_json_matches_the_closed_forms() {
     let (ok, out, err) = bearing(&args);
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
-    // Hertz (PHYSICS.md §1) and Dowson–Toyoda (§5.1) blended root-sum-square with Martin's
+    // Hertz (docs/physics.md §1) and Dowson–Toyoda (§5.1) blended root-sum-square with Martin's
     // h_c/R = 6U/W (the regression model's complete film), computed here in f64.
     let (q, l, u, r, e, a, eta) = (1500.0f64, 0.015, 10.0, 0.0035, 2.3077e11, 2.1e-8, 0.08);
     let w = q / l;

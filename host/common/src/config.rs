@@ -8,9 +8,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use bearing_core::{
-    BearingGeometry, BearingParams, ContactLaw, Crown, Lubricant, Material, ParamError,
-};
+use bearing_core::{BearingDesign, BearingParams, ContactLaw, ParamError};
 use serde::{Deserialize, Serialize};
 
 use crate::toml_lines::{self, TomlLines};
@@ -174,35 +172,12 @@ impl BearingConfig {
         Ok((config, params))
     }
 
-    /// The core parameters.
+    /// The core parameters: the file's fields as the core's [`BearingDesign`], validated by
+    /// it (the first refused field is named).
     pub fn params(&self) -> Result<BearingParams, ParamError> {
         let g = &self.geometry;
-        let crown = if g.crown_scale == 0.0 {
-            Crown::None
-        } else {
-            Crown::Logarithmic {
-                scale: g.crown_scale,
-            }
-        };
-        let geometry = BearingGeometry::new(
-            g.pitch_diameter_m,
-            g.roller_diameter_m,
-            g.roller_length_m,
-            g.roller_count,
-            crown,
-            g.radial_clearance_m,
-        )?;
-        let material = Material::new(
-            self.material.elastic_modulus_pa,
-            self.material.poisson_ratio,
-        )?;
         let l = &self.lubricant;
-        let lubricant = Lubricant::new(
-            l.viscosity_pa_s,
-            l.pressure_viscosity_pa_inv,
-            l.density_kg_m3,
-        )?;
-        let law = match self.model.contact_law.as_str() {
+        let contact_law = match self.model.contact_law.as_str() {
             "palmgren" => ContactLaw::Palmgren,
             "lundberg" => ContactLaw::Lundberg,
             _ => {
@@ -213,6 +188,22 @@ impl BearingConfig {
                 })
             }
         };
+        let params = BearingDesign {
+            pitch_diameter_m: g.pitch_diameter_m,
+            roller_diameter_m: g.roller_diameter_m,
+            roller_length_m: g.roller_length_m,
+            roller_count: g.roller_count,
+            radial_clearance_m: g.radial_clearance_m,
+            crown_scale: g.crown_scale,
+            elastic_modulus_pa: self.material.elastic_modulus_pa,
+            poisson_ratio: self.material.poisson_ratio,
+            viscosity_pa_s: l.viscosity_pa_s,
+            pressure_viscosity_pa_inv: l.pressure_viscosity_pa_inv,
+            density_kg_m3: l.density_kg_m3,
+            contact_law,
+            damping_factor_s: self.model.damping_factor_s,
+        }
+        .params()?;
         if let Some(v) = self.case.radial_load_n {
             if !(v.is_finite() && v >= 0.0) {
                 return Err(ParamError {
@@ -237,14 +228,7 @@ impl BearingConfig {
                 });
             }
         }
-        BearingParams::new(
-            geometry,
-            material,
-            material,
-            lubricant,
-            law,
-            self.model.damping_factor_s,
-        )
+        Ok(params)
     }
 }
 

@@ -1,6 +1,6 @@
 //! The operating case of one line contact (SI inputs, validated) and its dimensionless groups.
 //!
-//! Conventions are those of PHYSICS.md §1: E' is the reduced modulus 2/[(1−ν₁²)/E₁+(1−ν₂²)/E₂],
+//! Conventions are those of docs/physics.md §1: E' is the reduced modulus 2/[(1−ν₁²)/E₁+(1−ν₂²)/E₂],
 //! R the reduced radius, w = Q/l the load per unit length, u_m the entrainment (mean) speed;
 //! W = w/(E'R), U = η₀u_m/(E'R), G = αE', Moes M = W(2U)^−½, L = G(2U)^¼,
 //! b = √(8wR/(πE')), p_h = √(wE'/(2πR)).
@@ -50,7 +50,7 @@ fn check(field: &'static str, value: f64, lo: f64, hi: f64) -> Result<(), EhlErr
 
 impl ContactCase {
     /// Validating constructor. Ranges are generous physical bounds (far wider than the
-    /// PHYSICS.md §5.3 domain); NaN, infinities, zero and negative values are refused.
+    /// docs/physics.md §5.3 domain); NaN, infinities, zero and negative values are refused.
     pub fn new(
         load_per_length_n_per_m: f64,
         entrainment_speed_m_s: f64,
@@ -144,7 +144,7 @@ impl ContactCase {
             / (2.0 * PI * self.reduced_radius_m))
             .sqrt()
     }
-    /// Reynolds coefficient λ̄ = 12η₀u_mR²/(b³p_h) of PHYSICS.md §5.2.
+    /// Reynolds coefficient λ̄ = 12η₀u_mR²/(b³p_h) of docs/physics.md §5.2.
     pub fn lambda_bar(&self) -> f64 {
         let b = self.hertz_half_width_m();
         12.0 * self.viscosity_pa_s * self.entrainment_speed_m_s * self.reduced_radius_m.powi(2)
@@ -160,7 +160,7 @@ impl ContactCase {
 mod tests {
     use super::*;
 
-    /// p_h = 2w/(πb) (PHYSICS.md §1 identity) and the groups round-trip through
+    /// p_h = 2w/(πb) (docs/physics.md §1 identity) and the groups round-trip through
     /// `from_dimensionless` / `from_moes`.
     #[test]
     fn groups_round_trip() {

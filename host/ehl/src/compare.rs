@@ -1,6 +1,6 @@
 //! The solver against the published film-thickness formulas, case by case.
 //!
-//! Issue 3 asks for two comparisons (PHYSICS.md §5.1): with Barus viscosity and an
+//! Issue 3 asks for two comparisons (docs/physics.md §5.1): with Barus viscosity and an
 //! incompressible lubricant, h_c against Moes' formula (bound 5 %); with Roelands and
 //! Dowson–Higginson, h_c and h_min against Pan & Hamrock's (bound 10 %). A formula is a fit to
 //! numerical solutions, so a ratio outside the bound can be the formula's error or the solver's.
@@ -17,10 +17,10 @@ use super::{formulas, ContactCase, EhlError, Solver, SolverOptions, ViscosityLaw
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Formula {
-    /// Moes' central film (Barus, incompressible), PHYSICS.md §5.1.
+    /// Moes' central film (Barus, incompressible), docs/physics.md §5.1.
     Moes,
     /// Pan & Hamrock (1989), ASME J. Tribol. 111, 246–251: central and minimum film
-    /// (Roelands + Dowson–Higginson), PHYSICS.md §5.1.
+    /// (Roelands + Dowson–Higginson), docs/physics.md §5.1.
     PanHamrock,
 }
 

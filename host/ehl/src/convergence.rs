@@ -103,7 +103,7 @@ mod tests {
         assert!((r.extrapolated - 1.0).abs() < 1e-12);
     }
 
-    /// Grid refinement at the default grid (PHYSICS.md §5.2 accuracy claim): the h_c and h_min
+    /// Grid refinement at the default grid (docs/physics.md §5.2 accuracy claim): the h_c and h_min
     /// delivered by the default solver (801 nodes at most — the adaptive stop may end at 401 —
     /// Richardson-extrapolated with the level below in its own grid sequence) are within 1 % and
     /// 2 % of the three-grid Richardson

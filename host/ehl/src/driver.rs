@@ -119,7 +119,7 @@ impl Solver {
     /// of b; there the rigid-inlet pressure of Martin's solution has decayed to ~0.3 % of its
     /// peak, since it falls as (x/√(2Rh))⁻³), which exceeds 4.5 b when the film is thick
     /// compared with the elastic deflection (M ≲ 3). Below that the configured domain is used
-    /// unchanged; above, the whole grid is stretched by s (PHYSICS.md §5.2 fixes [−4.5, 1.5]
+    /// unchanged; above, the whole grid is stretched by s (docs/physics.md §5.2 fixes [−4.5, 1.5]
     /// for the elastic regime only).
     fn domain_scale(&self, case: &ContactCase) -> f64 {
         let h_c = if self.opts.elastic {

@@ -6,7 +6,7 @@
 //!   H = (h/R)(2U)^−½, M = W(2U)^−½, L = G(2U)^¼:
 //!   H_c = [(H_RI^{7/3} + H_EI^{7/3})^{3s/7} + (H_RP^{−7/2} + H_EP^{−7/2})^{−2s/7}]^{1/s},
 //!   H_RI = 3M⁻¹, H_EI = 2.621M^−⅕, H_RP = 1.287L^⅔, H_EP = 1.311M^−⅛L^¾,
-//!   s = 1.5(1 + exp(−1.2 H_EI/H_RI)). The PHYSICS.md constants agree with the tribonet.org
+//!   s = 1.5(1 + exp(−1.2 H_EI/H_RI)). The docs/physics.md constants agree with the tribonet.org
 //!   line-contact calculator page (which cites Moes) found with the search tool, as far as
 //!   that page rendered. Note that the rigid iso-viscous asymptote 3/M is 22 % above Martin's
 //!   4.896 U/W (= 2.448/M in these units); the formula is an interpolation meant for the
@@ -19,12 +19,12 @@
 //!   ch. 21, which reproduces them). Two searches of the stored corpora (last on 2026-11-21,
 //!   log in docs/ehl.md) returned the paper only as reference-list entries: not its text, its
 //!   fitted W, U, G range, nor its lubricant (η₀, Roelands Z) constants. The constants are those
-//!   of PHYSICS.md §5.1 cross-checked against Hamrock's book as recalled, so they remain "as
+//!   of docs/physics.md §5.1 cross-checked against Hamrock's book as recalled, so they remain "as
 //!   cited"; the agreement test (12 of 16 corners within 10 % for h_c, 15 of 16 for h_min) is
 //!   the evidence of how far they match the Roelands + DH model.
 //! - Martin (1916), rigid iso-viscous cylinder with the Reynolds exit condition:
-//!   w = 4.896 η₀u_mR/h₀, i.e. h₀/R = 4.896 U/W (PHYSICS.md §5.1).
-//! - Dowson–Toyoda central / Dowson–Higginson minimum (PHYSICS.md §5.1), for comparison tables
+//!   w = 4.896 η₀u_mR/h₀, i.e. h₀/R = 4.896 U/W (docs/physics.md §5.1).
+//! - Dowson–Toyoda central / Dowson–Higginson minimum (docs/physics.md §5.1), for comparison tables
 //!   and as the regression formulas the film network is compared with.
 //!
 //! The group forms (`W`, `U`, `G` in, `h/R` out) serve the dataset and training pipeline;
@@ -39,7 +39,7 @@ pub fn moes_central_dimensionless(m: f64, l: f64) -> f64 {
 
 /// The four Moes asymptotes of the dimensionless central film `H = (h/R)(2U)^−1/2`, as functions
 /// of the Moes parameters `M = W(2U)^−1/2`, `L = G(2U)^1/4` (Moes 1992, *Optimum similarity
-/// analysis with applications to elastohydrodynamic lubrication*, Wear 159; PHYSICS.md §5.1).
+/// analysis with applications to elastohydrodynamic lubrication*, Wear 159; docs/physics.md §5.1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MoesAsymptotes {
     /// Rigid–isoviscous (Martin): `H_RI = 3/M`.
@@ -63,7 +63,7 @@ impl MoesAsymptotes {
         }
     }
 
-    /// Moes' interpolation of the four asymptotes (PHYSICS.md §5.1):
+    /// Moes' interpolation of the four asymptotes (docs/physics.md §5.1):
     /// `H = [(H_RI^{7/3} + H_EI^{7/3})^{3s/7} + (H_RP^{−7/2} + H_EP^{−7/2})^{−2s/7}]^{1/s}`,
     /// `s = 1.5 (1 + exp(−1.2 H_EI/H_RI))`. Without pressure–viscosity (L = 0, so H_RP = 0) the
     /// piezoviscous term is zero.
@@ -81,7 +81,7 @@ impl MoesAsymptotes {
     }
 }
 
-/// Moes parameters `(M, L)` from `(W, U, G)`: `M = W(2U)^−1/2`, `L = G(2U)^1/4` (PHYSICS.md §1).
+/// Moes parameters `(M, L)` from `(W, U, G)`: `M = W(2U)^−1/2`, `L = G(2U)^1/4` (docs/physics.md §1).
 pub fn moes_parameters(w: f64, u: f64, g: f64) -> (f64, f64) {
     let two_u = 2.0 * u;
     (w / two_u.sqrt(), g * two_u.powf(0.25))
@@ -100,7 +100,7 @@ pub fn dowson_toyoda_central(w: f64, u: f64, g: f64) -> f64 {
 }
 
 /// Dowson–Higginson minimum film, `h_min/R = 2.65 G^0.54 U^0.70 W^−0.13` (Dowson & Higginson
-/// 1966, *Elastohydrodynamic lubrication*, as in PHYSICS.md §5.1).
+/// 1966, *Elastohydrodynamic lubrication*, as in docs/physics.md §5.1).
 pub fn dowson_higginson_minimum(w: f64, u: f64, g: f64) -> f64 {
     2.65 * g.powf(0.54) * u.powf(0.70) * w.powf(-0.13)
 }

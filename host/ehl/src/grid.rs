@@ -1,18 +1,18 @@
 //! Non-uniform 1-D grid over the dimensionless coordinate X = x/b.
 //!
 //! The outlet pressure spike of a heavily loaded contact is a few hundredths of b wide, and
-//! PHYSICS.md §5.2 asks for ΔX ≲ 0.005 there; a uniform grid that fine over X ∈ [−4.5, 1.5]
+//! docs/physics.md §5.2 asks for ΔX ≲ 0.005 there; a uniform grid that fine over X ∈ [−4.5, 1.5]
 //! would need 1200 nodes and a dense Newton solve would cost 64× more. The grid is therefore
 //! the image of a uniform parameter s ∈ [0, 1] under X(s), where dX/ds ∝ 1/ψ(X) and the node
 //! density ψ is a smooth sum of three plateaus: a coarse inlet/outlet, a finer Hertzian zone and
 //! a fine band around the outlet constriction (where the spike and the minimum film sit for every
-//! case of the PHYSICS.md §5.3 domain). Because the map is fixed, doubling the number of
+//! case of the docs/physics.md §5.3 domain). Because the map is fixed, doubling the number of
 //! intervals halves every spacing — the grid family needed for Richardson extrapolation.
 
 /// Shape of the node density (all in units of the Hertz half-width b).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct GridSpec {
-    /// Inlet end of the domain (fully flooded: −4.5 by default, PHYSICS.md §5.2).
+    /// Inlet end of the domain (fully flooded: −4.5 by default, docs/physics.md §5.2).
     pub x_start: f64,
     /// Outlet end of the domain (1.5 by default).
     pub x_end: f64,
@@ -130,7 +130,7 @@ mod tests {
     use super::*;
 
     /// Refining the family halves every spacing (the property Richardson extrapolation needs),
-    /// and the outlet band meets PHYSICS.md §5.2's ΔX ≲ 0.005 at the default 400 intervals.
+    /// and the outlet band meets docs/physics.md §5.2's ΔX ≲ 0.005 at the default 400 intervals.
     #[test]
     fn nested_refinement_and_outlet_spacing() {
         let coarse = build_nodes(&GridSpec::with_intervals(200));

@@ -1,9 +1,9 @@
 //! Elastic deflection of the line contact: the log kernel integrated exactly over each element.
 //!
-//! For plane strain of two elastic half-spaces with reduced modulus E' (PHYSICS.md §1) the
+//! For plane strain of two elastic half-spaces with reduced modulus E' (docs/physics.md §1) the
 //! deflection under a line pressure p(x') is −(2/(πE'))∫p ln|x−x'|dx' + const (Johnson,
 //! *Contact Mechanics*, eq. 2.25 with E* = E'/2). In the Hertz scaling X = x/b, P = p/p_h,
-//! H = hR/b² this becomes the film equation of PHYSICS.md §5.2,
+//! H = hR/b² this becomes the film equation of docs/physics.md §5.2,
 //!
 //!   H(X) = H₀ + X²/2 − (1/π) ∫ P(X') ln|X − X'| dX',
 //!

@@ -1,5 +1,5 @@
 //! Latin hypercubes: the stratified design itself ([`latin_hypercube`], over any source of
-//! random draws), and the sampling of the PHYSICS.md §5.3 input domain (thesis Table 5.1), kept
+//! random draws), and the sampling of the docs/physics.md §5.3 input domain (thesis Table 5.1), kept
 //! to Hertz pressures 0.3–3.5 GPa — the robustness population of the solver.
 //!
 //! Each of the seven inputs (Q, u_m, R, E', α, η₀, l) is split into `n` equal-probability strata
@@ -24,7 +24,7 @@ pub struct Sample {
     pub case: ContactCase,
 }
 
-/// (min, max, log-uniform) per input, PHYSICS.md §5.3 table.
+/// (min, max, log-uniform) per input, docs/physics.md §5.3 table.
 const RANGES: [(f64, f64, bool); 7] = [
     (150.0, 5000.0, true), // Q, N
     (0.6, 30.0, true),     // u_m, m/s

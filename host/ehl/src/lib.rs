@@ -1,5 +1,5 @@
 //! Full numerical solution of the isothermal, Newtonian, steady EHL line contact
-//! (PHYSICS.md §5.2) — the accuracy reference of the project.
+//! (docs/physics.md §5.2) — the accuracy reference of the project.
 //!
 //! Unknowns: the pressure at the nodes of a non-uniform grid over X = x/b ∈ [−4.5, 1.5]
 //! ([`grid`]) and the rigid-body separation H₀. Equations: Reynolds with Roelands or Barus
@@ -15,7 +15,7 @@
 //! with H(0) from Moes' formula, and continuation in the pressure–viscosity coefficient when the
 //! direct start fails. Why this rather than multigrid: the line contact has only hundreds of
 //! unknowns, Newton converges quadratically independent of load, and the dense LU of that size
-//! costs milliseconds, while Gauss–Seidel-type relaxations degrade at high load (PHYSICS.md
+//! costs milliseconds, while Gauss–Seidel-type relaxations degrade at high load (docs/physics.md
 //! §5.2). Scaling: P itself is the unknown and η̄ enters only through ε ∝ exp(−ln η̄), which
 //! underflows harmlessly in the contact; rows are equilibrated before the factorisation, so η̄
 //! spanning 20 (Roelands) or 100 (Barus) decades is harmless. Thick films (M ≲ 3) get a
@@ -27,7 +27,7 @@
 //! at 401 nodes when the estimated error there is already small.
 //!
 //! Failure is explicit: [`solve`] returns [`EhlError::NotConverged`] with the residuals unless
-//! both PHYSICS.md §5.2 criteria (Σ|ΔP|/ΣP ≤ 10⁻⁵ after a full Newton step with an unchanged
+//! both docs/physics.md §5.2 criteria (Σ|ΔP|/ΣP ≤ 10⁻⁵ after a full Newton step with an unchanged
 //! active set, and |∫P − π/2|/(π/2) ≤ 10⁻³) hold.
 //!
 //! Accuracy evidence (tests in `tests_reference`, [`convergence`]; tables in docs/ehl.md):
@@ -87,7 +87,7 @@ pub enum EhlError {
 }
 
 /// Solver options. `Default` is the accuracy-reference setting: Roelands, Dowson–Higginson,
-/// elastic, default grid, PHYSICS.md §5.2 tolerances, continuation allowed.
+/// elastic, default grid, docs/physics.md §5.2 tolerances, continuation allowed.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SolverOptions {
     /// Pressure–viscosity law.
@@ -104,9 +104,9 @@ pub struct SolverOptions {
     pub x_end: f64,
     /// Newton iteration limit per attempt.
     pub max_iterations: usize,
-    /// Σ|ΔP|/ΣP tolerance (PHYSICS.md §5.2: 10⁻⁵).
+    /// Σ|ΔP|/ΣP tolerance (docs/physics.md §5.2: 10⁻⁵).
     pub pressure_tolerance: f64,
-    /// Relative load-balance tolerance (PHYSICS.md §5.2: 10⁻³).
+    /// Relative load-balance tolerance (docs/physics.md §5.2: 10⁻³).
     pub load_tolerance: f64,
     /// Allow continuation in α when the direct Hertz start fails.
     pub continuation: bool,

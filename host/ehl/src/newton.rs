@@ -77,7 +77,7 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 /// Per-case constants of the dimensionless problem.
 #[derive(Debug, Clone, Copy)]
 pub struct Problem {
-    /// λ̄ of PHYSICS.md §5.2.
+    /// λ̄ of docs/physics.md §5.2.
     pub lambda_bar: f64,
     /// Rheology in the Hertz pressure scale.
     pub rheology: Rheology,
@@ -85,7 +85,7 @@ pub struct Problem {
     pub elastic: bool,
 }
 
-/// Convergence limits (PHYSICS.md §5.2: ΣΔP/ΣP ≤ 1e−5, load error ≤ 1e−3).
+/// Convergence limits (docs/physics.md §5.2: ΣΔP/ΣP ≤ 1e−5, load error ≤ 1e−3).
 #[derive(Debug, Clone, Copy)]
 pub struct Limits {
     pub max_iterations: usize,

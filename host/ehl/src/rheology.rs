@@ -6,7 +6,7 @@
 //! never forms η̄ itself — it forms `ε ∝ exp(−ln η̄)`, which underflows gracefully to zero in the
 //! contact instead of overflowing.
 //!
-//! Sources (PHYSICS.md §5.2):
+//! Sources (docs/physics.md §5.2):
 //! - Roelands: η = η₀ exp{(ln η₀ + 9.67)[(1 + p/p₀)^Z − 1]}, p₀ = 1.96·10⁸ Pa,
 //!   Z = α p₀ / (ln η₀ + 9.67) (Roelands 1966; the form and constants used by Houpert 1985 and
 //!   Venner & Lubrecht 2000, η₀ in Pa·s). With this Z the law has d ln η / dp = α at p = 0.

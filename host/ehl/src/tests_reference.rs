@@ -6,7 +6,7 @@
 use super::compare::{self, Comparer, Formula};
 use super::*;
 
-/// Hertz limit (PHYSICS.md §5.2): at large M with iso-viscous lubricant the pressure tends to
+/// Hertz limit (docs/physics.md §5.2): at large M with iso-viscous lubricant the pressure tends to
 /// √(1 − X²) (within 2 % of p_h inside |X| ≤ 0.9, away from the inlet/outlet edges) and the film
 /// is flat in the contact (Hertz closed form; Johnson, *Contact Mechanics* §5.6).
 #[test]
@@ -36,7 +36,7 @@ fn hertz_limit_at_large_m() {
     }
 }
 
-/// Martin's rigid iso-viscous cylinder with the Reynolds exit condition (PHYSICS.md §5.1):
+/// Martin's rigid iso-viscous cylinder with the Reynolds exit condition (docs/physics.md §5.1):
 /// h₀/R = 4.896 U/W. Rigid, iso-viscous, incompressible solver on a long inlet.
 #[test]
 fn martin_rigid_isoviscous_limit() {
@@ -105,7 +105,7 @@ fn moes_formula_agreement() {
 }
 
 /// Pan & Hamrock (1989) formulas for Roelands + Dowson–Higginson solutions (ASME J. Tribol. 111,
-/// 246–251; constants as in PHYSICS.md §5.1 and formulas.rs), checked at every one of the 16 corners
+/// 246–251; constants as in docs/physics.md §5.1 and formulas.rs), checked at every one of the 16 corners
 /// of W ∈ {2·10⁻⁵, 5·10⁻⁵, 10⁻⁴, 2·10⁻⁴} × U ∈ {10⁻¹¹, 10⁻¹⁰} × G ∈ {2500, 5000}, η₀ = 0.04 Pa·s
 /// (table in docs/ehl.md). The paper's own parameter range and lubricant constants could not be
 /// found (search log in docs/ehl.md), so no corner is dropped as "outside PH's range":
@@ -167,7 +167,7 @@ fn pan_hamrock_agreement() {
     assert_eq!((central_within, minimum_within), (12, 15));
 }
 
-/// Fast robustness check over Latin-hypercube samples of the PHYSICS.md §5.3 domain
+/// Fast robustness check over Latin-hypercube samples of the docs/physics.md §5.3 domain
 /// (p_h 0.3–3.5 GPa), 100 samples with the default solver: at least 99
 /// converge to a consistent result (film positive, load balanced, film exit inside the domain).
 /// The full 2000-sample figure comes from the ignored test below (release mode).

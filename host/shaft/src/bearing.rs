@@ -70,6 +70,12 @@ pub trait BearingModel: Send {
     fn evaluate(&mut self, state: &BearingState) -> Result<BearingReaction, BearingError>;
     /// Called once per accepted time step (lets a model advance its cage angle / warm start).
     fn commit(&mut self, state: &BearingState, dt: f64);
+    /// Reaction at a quasi-static state (static equilibrium, linearisation): a model with a
+    /// memory converges it at this state first, so the reaction is one function of the state
+    /// however the state was reached. Without memory: [`BearingModel::evaluate`].
+    fn settle(&mut self, state: &BearingState) -> Result<BearingReaction, BearingError> {
+        self.evaluate(state)
+    }
     /// Per-roller states of the last evaluation (None for models without rollers).
     fn roller_states(&self) -> Option<Vec<RollerState>> {
         None
@@ -119,19 +125,8 @@ impl BearingModel for LinearBearing {
     fn commit(&mut self, _state: &BearingState, _dt: f64) {}
 }
 
-/// Film model of a roller bearing (names as in the shaft TOML `film = "…"`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum FilmChoice {
-    /// Integer (quantised) ANN film network.
-    Int,
-    /// f32 ANN film network.
-    F32,
-    /// Regression (analytical) film formula.
-    Regression,
-    /// No film (dry contact, today's commercial practice).
-    Dry,
-}
+/// Film model of a roller bearing (names as in the shaft TOML `film = "…"`): the core's.
+pub use bearing_core::FilmKind;
 
 /// How a bearing of the shaft model is made; turned into a fresh [`BearingModel`] for every
 /// simulation (the models carry state, e.g. the cage angle).
@@ -144,7 +139,7 @@ pub enum BearingSpec {
         /// Bearing configuration file (already resolved against the shaft file's folder).
         config: PathBuf,
         /// Film model.
-        film: FilmChoice,
+        film: FilmKind,
     },
 }
 
@@ -158,7 +153,7 @@ impl BearingSpec {
     }
 
     /// The same bearing with another film model (dry vs lubricated runs); linear ones unchanged.
-    pub fn with_film(&self, film: FilmChoice) -> BearingSpec {
+    pub fn with_film(&self, film: FilmKind) -> BearingSpec {
         match self {
             BearingSpec::Linear(b) => BearingSpec::Linear(*b),
             BearingSpec::Roller { config, .. } => BearingSpec::Roller {
@@ -171,10 +166,7 @@ impl BearingSpec {
 
 /// Constructor hook for the core's roller bearing: the bearing TOML at `path` (see
 /// `bearing_host_common::config`) with the given film model, through [`super::roller_bearing::RollerBearing`].
-pub fn roller_bearing(
-    path: &Path,
-    film: FilmChoice,
-) -> Result<Box<dyn BearingModel>, BearingError> {
+pub fn roller_bearing(path: &Path, film: FilmKind) -> Result<Box<dyn BearingModel>, BearingError> {
     Ok(Box::new(super::roller_bearing::RollerBearing::from_file(
         path, film,
     )?))

@@ -1,7 +1,7 @@
 //! External loads on the shaft: static forces, gravity, mass unbalance and the spur-gear mesh
 //! driven by the PMSM ([`super::motor`]).
 //!
-//! Gear mesh (PHYSICS.md §6.2): the pinion of pitch radius r_p = m·z/2 transmits the motor torque
+//! Gear mesh (docs/physics.md §6.2): the pinion of pitch radius r_p = m·z/2 transmits the motor torque
 //! T(t), so the tangential tooth force is F_t = T/r_p and the separating (radial) force
 //! F_r = F_t·tan α (spur gear, pressure angle α; e.g. Shigley's *Mechanical Engineering Design*,
 //! 10th ed., §13-14). The transmission-error excitation is a sinusoid at the mesh frequency

@@ -1,7 +1,7 @@
 //! Permanent-magnet synchronous motor (PMSM) drive torque: the torque–speed curve and the torque
 //! ripple that the pinion transmits into the gear mesh.
 //!
-//! Torque–speed curve of a field-weakened PMSM (PHYSICS.md §6.2; e.g. Hendershot & Miller,
+//! Torque–speed curve of a field-weakened PMSM (docs/physics.md §6.2; e.g. Hendershot & Miller,
 //! *Design of Brushless Permanent-Magnet Machines*, 2010, ch. 1): constant torque T_peak up to the
 //! base speed Ω_b = P_max / T_peak, constant power P_max above it, nothing above the maximum speed.
 //! Ripple: a sinusoid of relative amplitude r at `ripple_order` times the shaft frequency.

@@ -44,7 +44,7 @@ pub fn linearise(
         .iter()
         .zip(bearings.iter_mut())
         .map(|(d, b)| {
-            b.evaluate(&BearingState {
+            b.settle(&BearingState {
                 displacement: [q[d[0]], q[d[1]]],
                 velocity: [0.0; 2],
                 spin_speed,

@@ -80,7 +80,7 @@ pub fn equilibrium(
         let mut reactions = Vec::with_capacity(dofs.len());
         for (b, model_b) in bearings.iter_mut().enumerate() {
             let d = dofs[b];
-            let react = model_b.evaluate(&BearingState {
+            let react = model_b.settle(&BearingState {
                 displacement: [q[d[0]], q[d[1]]],
                 velocity: [0.0; 2],
                 spin_speed,

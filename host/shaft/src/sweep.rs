@@ -1,10 +1,10 @@
-//! Speed sweep (PHYSICS.md §6.2): at each speed, run to steady state with the lubricated
+//! Speed sweep (docs/physics.md §6.2): at each speed, run to steady state with the lubricated
 //! bearings and again with dry ones, and keep the envelopes. Speeds run in parallel (rayon) with
 //! a progress bar; each run owns fresh bearing models.
 
 use rayon::prelude::*;
 
-use super::bearing::{BearingSpec, FilmChoice};
+use super::bearing::{BearingSpec, FilmKind};
 use super::model::RotorModel;
 use super::operating::{operating_modes, OperatingError};
 use super::simulate::{run, Envelope, RunError, RunResult, RunSettings};
@@ -13,7 +13,7 @@ use super::spectrum::amplitude_spectrum;
 /// Natural frequencies kept per speed and side (the lowest, with the bearings linearised).
 pub const SWEEP_MODES: usize = 4;
 
-/// The sweep speeds of PHYSICS.md §6.2: 1000 → 21 000 rpm every 1000 rpm, plus every 250 rpm
+/// The sweep speeds of docs/physics.md §6.2: 1000 → 21 000 rpm every 1000 rpm, plus every 250 rpm
 /// from 12 000 to 14 000 rpm.
 pub fn hub_motor_speeds_rpm() -> Vec<f64> {
     let mut v: Vec<f64> = (1..=21).map(|k| 1000.0 * k as f64).collect();
@@ -77,13 +77,13 @@ pub fn natural_frequencies_hz(
 }
 
 /// Runs the sweep. `lubricated_film` replaces the film of every roller bearing on the lubricated
-/// side (None keeps each bearing's configured film); the dry side uses `FilmChoice::Dry`.
+/// side (None keeps each bearing's configured film); the dry side uses `FilmKind::Dry`.
 /// `progress` is called once per finished run.
 pub fn sweep(
     model: &RotorModel,
     speeds_rpm: &[f64],
     settings_at: &SettingsAt<'_>,
-    lubricated_film: Option<FilmChoice>,
+    lubricated_film: Option<FilmKind>,
     progress: &(dyn Fn() + Sync),
 ) -> Result<Vec<SweepPoint>, RunError> {
     let specs: Vec<BearingSpec> = model
@@ -95,7 +95,7 @@ pub fn sweep(
             None => b.spec.clone(),
         })
         .collect();
-    let dry: Vec<BearingSpec> = specs.iter().map(|s| s.with_film(FilmChoice::Dry)).collect();
+    let dry: Vec<BearingSpec> = specs.iter().map(|s| s.with_film(FilmKind::Dry)).collect();
     speeds_rpm
         .par_iter()
         .map(|&rpm| {

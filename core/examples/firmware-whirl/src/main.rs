@@ -15,12 +15,7 @@ use core::f32::consts::{PI, TAU};
 use core::sync::atomic::{AtomicU32, Ordering};
 
 use bearing_core::bearing::SETTLE_STEPS;
-use bearing_core::film::ann::AnnInt;
-use bearing_core::math::sin_cos;
-use bearing_core::{
-    Bearing, BearingGeometry, BearingParams, ContactLaw, Crown, Lubricant, Material,
-    OperatingState, StepStatus,
-};
+use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
 use cortex_m::interrupt::{self, Mutex};
 use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::{entry, exception};
@@ -59,7 +54,7 @@ static DROPPED: AtomicU32 = AtomicU32::new(0);
 /// The shaft's kinematics at sample `n`, t = n/rate: ωt = 2π·(n mod turn)/turn.
 fn whirl(n: u32) -> Sample {
     let phase = (n % SAMPLES_PER_TURN) as f32 * (TAU / SAMPLES_PER_TURN as f32);
-    let (sin, cos) = sin_cos(phase);
+    let (sin, cos) = libm::sincosf(phase);
     let (e, w) = (WHIRL_RADIUS_M, SHAFT_SPEED_RAD_S);
     Sample {
         displacement_m: [e * cos, e * sin],
@@ -83,52 +78,34 @@ fn SysTick() {
 
 // --- The bearing: every call of the core is in this section. ---
 
-/// The hub-motor bearing (PHYSICS.md §6.2, `configs/hub_motor.toml`: pitch diameter 60 mm,
-/// rollers Ø8.8 mm × 15 mm, 17 rollers, logarithmic crown, 2 µm interference; steel, the
-/// thesis oil, Palmgren slices, f_damp 10⁻⁵ s), 10 slices per roller, and its cage angle.
+/// The hub-motor bearing (docs/physics.md §6.2, `configs/hub_motor.toml`) with the integer
+/// film network and 10 slices per roller; the core integrates its cage angle.
 struct HubMotor {
     bearing: Bearing<17, 10>,
-    cage_angle_rad: f32,
-    /// Cage advance per sample (rad).
-    cage_step_rad: f32,
 }
 
 impl HubMotor {
     /// The bearing, its warm start converged at `first` (`settle`, before the real-time loop:
     /// it renews the whole film table) so that every later step costs the same.
     fn new(first: &Sample) -> Option<Self> {
-        let crown = Crown::Logarithmic { scale: 1.0 };
-        let geometry = BearingGeometry::new(0.060, 0.0088, 0.015, 17, crown, -2.0e-6).ok()?;
-        let oil = Lubricant::new(0.08, 2.1e-8, 833.8).ok()?;
-        let (steel, law) = (Material::STEEL, ContactLaw::Palmgren);
-        let params = BearingParams::new(geometry, steel, steel, oil, law, 1.0e-5).ok()?;
-        let cage_step_rad = geometry.cage_speed_rad_s(SHAFT_SPEED_RAD_S) * SAMPLE_PERIOD_S;
-        let mut hub_motor = Self {
-            bearing: Bearing::new(params).ok()?,
-            cage_angle_rad: 0.0,
-            cage_step_rad,
-        };
-        let state = hub_motor.state(first)?;
-        hub_motor.bearing.settle(&AnnInt, &state, SETTLE_STEPS);
-        Some(hub_motor)
+        let params = BearingDesign::HUB_MOTOR.params().ok()?;
+        let mut bearing = Bearing::new(params, FilmKind::Int).ok()?;
+        bearing.settle(&state(first)?, SETTLE_STEPS).ok()?;
+        Some(Self { bearing })
     }
 
-    /// The operating state at `sample` and the current cage angle.
-    fn state(&self, sample: &Sample) -> Option<OperatingState> {
-        let (x, v, tilt) = (sample.displacement_m, sample.velocity_m_s, [0.0; 2]);
-        OperatingState::new(x, v, tilt, SHAFT_SPEED_RAD_S, self.cage_angle_rad).ok()
-    }
-
-    /// One film-coupled step (integer film network) at `sample`: force (N) and radial
-    /// stiffness (N/m), `None` if the core refused the state.
+    /// One film-coupled step, one sample period on: force (N) and radial stiffness (N/m),
+    /// `None` if the core refused the state.
     fn step(&mut self, sample: &Sample) -> Option<([f32; 2], [[f32; 2]; 2])> {
-        let out = self.bearing.step(&AnnInt, &self.state(sample)?);
-        self.cage_angle_rad += self.cage_step_rad;
-        if self.cage_angle_rad >= TAU {
-            self.cage_angle_rad -= TAU;
-        }
-        (out.status == StepStatus::Ok).then(|| (out.force_n, out.radial_stiffness_n_per_m()))
+        let out = self.bearing.advance(&state(sample)?, SAMPLE_PERIOD_S).ok()?;
+        Some((out.force_n, out.radial_stiffness_n_per_m()))
     }
+}
+
+/// The operating state of the inner race at `sample` (no tilt).
+fn state(sample: &Sample) -> Option<OperatingState> {
+    let (x, v, tilt) = (sample.displacement_m, sample.velocity_m_s, [0.0; 2]);
+    OperatingState::new(x, v, tilt, SHAFT_SPEED_RAD_S).ok()
 }
 
 // --- The loop. ---

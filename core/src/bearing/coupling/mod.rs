@@ -1,6 +1,6 @@
 //! The film-coupled roller load: a scalar fixed point solved in a fixed amount of work.
 //!
-//! The film adds to the approach (PHYSICS.md §4): δ_j = δ_geo + H(Q_j) with H = h_in + h_out,
+//! The film adds to the approach (docs/physics.md §4): δ_j = δ_geo + H(Q_j) with H = h_in + h_out,
 //! and Q_j = Q(δ_j) from the slices. H falls with Q (EHL: ∝ Q^−0.1; hydrodynamic: ∝ 1/Q), so
 //! the equation has exactly one root for any geometric approach, positive or negative.
 //!
@@ -20,7 +20,7 @@
 //! film table (`film_table`); load and moment follow that law.
 //!
 //! From a converged warm start at most 0.25 µm of geometric approach away this meets
-//! |Δh|/h ≤ 10⁻³ (tested against a converged f64 iteration over the PHYSICS.md §5.3 domain);
+//! |Δh|/h ≤ 10⁻³ (tested against a converged f64 iteration over the docs/physics.md §5.3 domain);
 //! larger jumps cost accuracy at the lightest loads for one step (see the test).
 
 mod newton;

@@ -4,7 +4,7 @@
 //! i64 path runs one scalar multiply–add per weight.
 //!
 //! **Accumulation.** Weights and inputs are i16 and the biases below 2⁴⁰ (the exporter refuses
-//! a layer whose bound `Σ|w|·2¹⁵ + |b|` reaches 2⁴⁰, `bearing_host::ann::quant`), so every
+//! a layer whose bound `Σ|w|·2¹⁵ + |b|` reaches 2⁴⁰, `bearing_train::ann::quant`), so every
 //! product `w·x` (|w·x| ≤ 2³⁰) and every partial sum is an integer of magnitude below 2⁴⁰;
 //! f64 holds every integer below 2⁵³ exactly, so no addition or multiplication rounds and
 //! the f64 sum *is* the i64 sum, in any order. The weights are stored input-major (`[i][o]`,

@@ -1,5 +1,5 @@
 //! f32 inference: dense layers with widths as const generics, hidden activations by the
-//! fixed-cost functions of [`super::fastmath`]. Every sum is two partial sums in input order,
+//! fixed-cost functions of `math::series`. Every sum is two partial sums in input order,
 //! the even inputs from the bias and the odd ones, added last:
 //! `(b + w₀x₀ + w₂x₂ + …) + (w₁x₁ + w₃x₃ + …)`. The same number of additions as one sum, but
 //! half the chain of dependent ones: the network is latency-bound (each layer waits for the
@@ -11,7 +11,7 @@
 //! definition (Rust never reassociates or contracts f32 arithmetic into FMA), so the host and
 //! the Cortex-M4, which runs the same code one lane at a time, give identical bits.
 
-use super::fastmath;
+use crate::math::series;
 
 /// Hidden-layer activation of the network.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,8 +29,8 @@ impl Activation {
     #[inline(always)]
     pub fn apply(self, x: f32) -> f32 {
         match self {
-            Activation::Tanh => fastmath::tanh(x),
-            Activation::Logistic => fastmath::logistic(x),
+            Activation::Tanh => series::tanh(x),
+            Activation::Logistic => series::logistic(x),
             Activation::Relu => {
                 if x > 0.0 {
                     x

@@ -1,4 +1,4 @@
-//! Integer inference (TFLite-style symmetric quantisation, EMBEDDED.md): int16 weights and
+//! Integer inference (TFLite-style symmetric quantisation, docs/embedded.md): int16 weights and
 //! activations, exact integer accumulators, per-layer requantisation by a Q23 multiplier and a
 //! right shift with rounding and saturation, hidden activations by a 1025-point lookup table
 //! with linear interpolation.
@@ -35,7 +35,7 @@ pub type Lut = [i16; LUT_LEN];
 /// saturation; NaN gives 0.
 #[inline]
 pub fn quantise_input(x: f32) -> i16 {
-    let v = super::fastmath::clamp(x * 32767.0, -32768.0, 32767.0);
+    let v = crate::math::series::clamp(x * 32767.0, -32768.0, 32767.0);
     // 1.5·2²³ rounding constant: round half to even, exact for |v| < 2²².
     let shifted = v + 12_582_912.0;
     #[cfg(target_arch = "x86_64")]

@@ -1,12 +1,12 @@
 //! The neural film model in the core: a small MLP trained on numerical EHL solutions
-//! (PHYSICS.md §5.3), in f32 ([`AnnF32`]) and in integers ([`AnnInt`]), both behind
+//! (docs/physics.md §5.3), in f32 ([`AnnF32`]) and in integers ([`AnnInt`]), both behind
 //! [`FilmModel`].
 //!
 //! Per contact, at a fixed cost:
-//! 1. logarithms of the seven inputs (fixed-cost [`fastmath::ln`]) → `ln W, ln U, ln G`;
+//! 1. logarithms of the seven inputs (fixed-cost `math::series::ln_atanh`) → `ln W, ln U, ln G`;
 //! 2. the domain guard: every input finite and > 0, inside the training box, Hertz pressure
 //!    inside its window (`2 ln p_h = ln w + ln E' − ln 2π − ln R`), and the piezoviscous–elastic
-//!    regime test of `bearing_host::dataset::domain` as linear inequalities in `ln M, ln L`;
+//!    regime test of `bearing_train::dataset::domain` as linear inequalities in `ln M, ln L`;
 //! 3. the regression films (Dowson–Toyoda / Dowson–Higginson) in logarithms;
 //! 4. the network on the normalised features (always evaluated, so the cost never depends on
 //!    the guard), giving `ln(h/h_regression)` or `ln(h/R)`;
@@ -23,7 +23,6 @@
 mod exact_f64;
 #[cfg(target_arch = "x86_64")]
 mod exact_lut;
-pub mod fastmath;
 #[path = "f32.rs"]
 pub mod float;
 pub mod int;
@@ -36,7 +35,7 @@ pub mod model_weights;
 use super::{ContactInput, Film, FilmModel, FilmSource, ServedLoads};
 use model_weights as model;
 
-/// The network's input set (`bearing_host::ann::features`).
+/// The network's input set (`bearing_train::ann::features`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum InputSet {
     /// (ln W, ln U, ln G).
@@ -121,7 +120,7 @@ pub fn prepare(c: &ContactInput) -> Prepared {
         valid &= in_positive_range(*v, f32::from_bits(1), f32::MAX);
         inside &= in_positive_range(*v, lo, hi);
     }
-    let [ln_q, ln_u_m, ln_r, ln_e, ln_alpha, ln_eta, ln_l] = raw.map(fastmath::ln);
+    let [ln_q, ln_u_m, ln_r, ln_e, ln_alpha, ln_eta, ln_l] = raw.map(crate::math::series::ln_atanh);
     let ln_w = ln_q - ln_l - ln_e - ln_r;
     let ln_u = ln_eta + ln_u_m - ln_e - ln_r;
     let ln_g = ln_alpha + ln_e;
@@ -179,8 +178,8 @@ fn fallback_films(p: &Prepared) -> [f32; 2] {
         let reg = p.ln_regression_over_r.get(k).copied().unwrap_or(0.0);
         let martin = p.ln_martin_over_r.get(k).copied().unwrap_or(0.0);
         let (ehl, hydro) = (
-            fastmath::exp(p.ln_radius + reg),
-            fastmath::exp(p.ln_radius + martin),
+            crate::math::series::exp_taylor(p.ln_radius + reg),
+            crate::math::series::exp_taylor(p.ln_radius + martin),
         );
         *h = crate::math::sqrt(ehl * ehl + hydro * hydro);
     }
@@ -201,7 +200,7 @@ fn finish_with_fallback(p: &Prepared, y: [f32; 2], fallback: [f32; 2], source: F
             TargetForm::LogRatio => p.ln_radius + reg + t,
             TargetForm::LogHr => p.ln_radius + t,
         };
-        let network = fastmath::exp(ln_net);
+        let network = crate::math::series::exp_taylor(ln_net);
         let value = crate::math::select(p.in_domain, network, fallback);
         *h = if p.valid & (0.0..=f32::MAX).contains(&value) {
             value
@@ -237,7 +236,7 @@ pub fn served_loads(c: &ContactInput, source: FilmSource) -> ServedLoads {
     for (v, [lo, hi]) in others.iter().zip(model::DOMAIN.inputs.iter().skip(1)) {
         inside &= (*v > 0.0) & (*v <= f32::MAX) & (*v >= *lo) & (*v <= *hi);
     }
-    let [ln_u_m, ln_r, ln_e, ln_alpha, ln_eta, ln_l] = others.map(fastmath::ln);
+    let [ln_u_m, ln_r, ln_e, ln_alpha, ln_eta, ln_l] = others.map(crate::math::series::ln_atanh);
     let ln_u = ln_eta + ln_u_m - ln_e - ln_r;
     let ln_g = ln_alpha + ln_e;
     let ln_l_moes = ln_g + 0.25 * (LN_2 + ln_u);
@@ -259,10 +258,16 @@ pub fn served_loads(c: &ContactInput, source: FilmSource) -> ServedLoads {
         (c3 - elastic) / 0.125,
     );
     let lo = crate::math::max(
-        crate::math::max(fastmath::ln(q_min), 2.0 * ln_pmin + hertz_offset),
+        crate::math::max(
+            crate::math::series::ln_atanh(q_min),
+            2.0 * ln_pmin + hertz_offset,
+        ),
         ln_m_min + ln_q_of_m,
     );
-    let hi = crate::math::min(fastmath::ln(q_max), 2.0 * ln_pmax + hertz_offset);
+    let hi = crate::math::min(
+        crate::math::series::ln_atanh(q_max),
+        2.0 * ln_pmax + hertz_offset,
+    );
     ServedLoads {
         ln_load_min: if inside { lo } else { f32::MAX },
         ln_load_max: if inside { hi } else { f32::MIN },
@@ -361,7 +366,7 @@ mod served_tests {
                 viscosity_pa_s: libm::expf(ln_eta),
             };
             let served = served_loads(&c, FilmSource::NetworkInt);
-            let ln_load = fastmath::ln(c.load_n);
+            let ln_load = crate::math::series::ln_atanh(c.load_n);
             let margin = 1.0e-3;
             let clearly_in = ln_load > served.ln_load_min + margin && ln_load < served.ln_load_max - margin;
             let clearly_out = ln_load < served.ln_load_min - margin || ln_load > served.ln_load_max + margin;

@@ -5,7 +5,7 @@
 //! - Dowson–Toyoda central: `ln(h_c/R) = ln 3.06 + 0.56 ln G + 0.69 ln U − 0.10 ln W`;
 //! - Dowson–Higginson minimum: `ln(h_min/R) = ln 2.65 + 0.54 ln G + 0.70 ln U − 0.13 ln W`
 //!
-//! (PHYSICS.md §5.1). The lead's `film::regression` module was not on `main` when this was
+//! (docs/physics.md §5.1). The lead's `film::regression` module was not on `main` when this was
 //! written; this private copy is meant to be replaced by it.
 
 /// `ln(h_c/R)` by Dowson–Toyoda.

@@ -1,6 +1,6 @@
 //! Tests of the step kernel. References: the bearing config files (`configs/*.toml`, read by
-//! the host's config loader) for the parameters; the core's `Bearing::step` called directly
-//! with an independently computed cage angle (PHYSICS.md §2, integrated in f64) for the step.
+//! the host's config loader) for the parameters; the core's bearing settled directly at an
+//! independently computed cage angle (docs/physics.md §2, integrated in f64) for the step.
 
 use super::*;
 use bearing_core::film::FilmSource;
@@ -46,16 +46,19 @@ fn step_is_the_core_step_at_the_integrated_cage_angle() {
     assert!((f64::from(out.cage_angle_rad) - cage).abs() < 1e-4);
 
     // The core called directly, converged at the kernel's state.
-    let mut bearing: Bearing<17, SLICES> =
-        Bearing::new(params("hub_motor", "thesis_oil").unwrap()).unwrap();
+    let mut bearing: Bearing<17, SLICES> = Bearing::new(
+        params("hub_motor", "thesis_oil").unwrap(),
+        FilmKind::Regression,
+    )
+    .unwrap();
+    bearing.set_cage_angle(out.cage_angle_rad).unwrap();
     let state = OperatingState {
         displacement_m: [x, y],
         velocity_m_s: [1.0e-4, -2.0e-4],
         tilt_rad: [0.0; 2],
         shaft_speed_rad_s: speed,
-        cage_angle_rad: out.cage_angle_rad,
     };
-    let direct = bearing.settle(&Regression, &state, 20);
+    let direct = bearing.settle(&state, 20).unwrap();
     assert_eq!(out.rollers, 17);
     let force = f64::from(direct.force_n[0]).hypot(f64::from(direct.force_n[1]));
     assert!(force > 100.0, "the state loads the bearing: {force} N");
@@ -172,7 +175,7 @@ fn two_replays_are_bit_identical() {
 #[test]
 fn steps_the_networks_and_flags_their_contacts() {
     // The hub-motor bearing loaded downward at 12 000 rpm: the integer and f32 networks serve
-    // the loaded contacts (PHYSICS.md §5.3 domain) and give films within a few percent of each
+    // the loaded contacts (docs/physics.md §5.3 domain) and give films within a few percent of each
     // other; every contact is flagged by the network or its fallback.
     let mut films = Vec::new();
     for kind in [FilmKind::Int, FilmKind::F32] {

@@ -18,7 +18,7 @@ pub struct DatasetArgs {
 enum DatasetCommand {
     /// Sample a maximin Latin hypercube over the film domain and solve every case (resumable).
     Generate(GenerateArgs),
-    /// Check that the most loaded rollers of the PHYSICS.md §6 cases lie in the domain.
+    /// Check that the most loaded rollers of the docs/physics.md §6 cases lie in the domain.
     CheckDomain {
         /// Machine-readable output.
         #[arg(long)]
@@ -31,7 +31,7 @@ enum DatasetCommand {
 enum SolverChoice {
     /// The full numerical EHL solver (`bearing_ehl`).
     Numerical,
-    /// Moes' formula (PHYSICS.md §5.1): a stand-in target for pipeline tests only.
+    /// Moes' formula (docs/physics.md §5.1): a stand-in target for pipeline tests only.
     Moes,
 }
 
@@ -68,7 +68,7 @@ pub fn run(args: DatasetArgs) -> Result<()> {
 fn generate(args: GenerateArgs) -> Result<()> {
     let command = std::env::args().collect::<Vec<_>>().join(" ");
     // The accuracy-reference settings of the solver (Roelands, Dowson–Higginson density,
-    // PHYSICS.md §5.2 tolerances), with the whole grid sequence to 801 nodes and the Richardson
+    // docs/physics.md §5.2 tolerances), with the whole grid sequence to 801 nodes and the Richardson
     // estimate from its last two levels: the adaptive early stop (estimated error ≤ 1 %) would
     // put up to a percent of grid-dependent scatter into the targets the network learns.
     let ehl_options = bearing_ehl::SolverOptions {

@@ -365,7 +365,7 @@ mod tests {
         "0.08",
     ];
 
-    /// The SI flags build w = Q/l and the other inputs unchanged (PHYSICS.md §1 definitions).
+    /// The SI flags build w = Q/l and the other inputs unchanged (docs/physics.md §1 definitions).
     #[test]
     fn si_flags_build_the_case() {
         let c = case_of(&SI).unwrap();

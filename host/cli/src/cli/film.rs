@@ -20,7 +20,7 @@ use bearing_host_common::config::BearingConfig;
 /// Film thickness of a line contact from every available film model.
 ///
 /// Give the contact in SI units (`--load --length --entrainment --radius --modulus --alpha
-/// --eta0`, E' as PHYSICS.md §1 defines it), or a bearing with `--config FILE --speed-rpm RPM
+/// --eta0`, E' as docs/physics.md §1 defines it), or a bearing with `--config FILE --speed-rpm RPM
 /// --roller-load N` (both contacts of the roller are shown).
 #[derive(Args, Debug)]
 pub struct FilmArgs {
@@ -94,7 +94,7 @@ fn maybe_plot(args: &FilmArgs, contact: &ContactInput, title: &str) -> anyhow::R
     Ok(())
 }
 
-/// The numerical solution of the contact (PHYSICS.md §5.2, default options): the reference
+/// The numerical solution of the contact (docs/physics.md §5.2, default options): the reference
 /// of every other film model.
 pub(super) fn numerical_solution(contact: &ContactInput) -> Result<EhlSolution, EhlError> {
     ContactCase::new(

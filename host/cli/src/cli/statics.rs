@@ -4,13 +4,13 @@
 use std::path::PathBuf;
 
 use anyhow::{bail, Context};
-use bearing_core::{OperatingState, Regression};
+use bearing_core::{DynBearing, FilmKind, OperatingState};
 use clap::Args;
 use serde_json::json;
 
 use super::common::{non_negative, print_json, rad_per_s};
 use bearing_host_common::config::BearingConfig;
-use bearing_host_common::rolling::{new_bearing, DynBearing, StepSnapshot};
+use bearing_host_common::rolling::{boxed, StepSnapshot};
 
 /// Static equilibrium of the inner race under a radial load along −y.
 #[derive(Args, Debug)]
@@ -44,27 +44,14 @@ struct Solution {
     step: StepSnapshot,
 }
 
-fn solve(
-    bearing: &mut dyn DynBearing,
-    lubricated: bool,
-    load_n: f32,
-    speed: f32,
-) -> anyhow::Result<Solution> {
+fn solve(bearing: &mut dyn DynBearing, load_n: f32, speed: f32) -> anyhow::Result<Solution> {
+    let lubricated = bearing.film() != FilmKind::Dry;
     // Roller 0 on the load line (−y) gives the symmetric load zone of the textbooks.
-    let start = OperatingState::new(
-        [0.0; 2],
-        [0.0; 2],
-        [0.0; 2],
-        speed,
-        -std::f32::consts::FRAC_PI_2,
-    )?;
+    bearing.set_cage_angle(-std::f32::consts::FRAC_PI_2)?;
+    let start = OperatingState::new([0.0; 2], [0.0; 2], [0.0; 2], speed)?;
     bearing.reset();
     let force = [0.0, -load_n];
-    let eq = if lubricated {
-        bearing.static_equilibrium(Some(&Regression), force, &start, TOLERANCE, MAX_ITERATIONS)
-    } else {
-        bearing.static_equilibrium(None, force, &start, TOLERANCE, MAX_ITERATIONS)
-    };
+    let eq = bearing.static_equilibrium(force, &start, TOLERANCE, MAX_ITERATIONS);
     if !eq.converged {
         bail!(
             "{} equilibrium not reached after {} Newton iterations: force residual {:.3e} N (tolerance {:.1e}·F)",
@@ -78,11 +65,7 @@ fn solve(
         displacement_m: eq.displacement_m,
         ..start
     };
-    let step = if lubricated {
-        bearing.step(&Regression, &state)
-    } else {
-        bearing.step_dry(&state)
-    };
+    let step = StepSnapshot::from(bearing.advance(&state, 0.0)?);
     Ok(Solution {
         displacement_m: eq.displacement_m,
         residual_n: eq.residual_n,
@@ -167,12 +150,17 @@ pub fn run(args: StaticArgs) -> anyhow::Result<()> {
         .or(config.case.speed_rpm.map(f64::from))
         .unwrap_or(0.0);
     let speed = rad_per_s(rpm);
-    let mut bearing =
-        new_bearing(params).map_err(|e| anyhow::anyhow!("{}: {e}", args.config.display()))?;
     let lubricated = rpm > 0.0;
-    let main = solve(bearing.as_mut(), lubricated, load as f32, speed)?;
+    let build =
+        |film| boxed(params, film).map_err(|e| anyhow::anyhow!("{}: {e}", args.config.display()));
+    let main_film = if lubricated {
+        FilmKind::Regression
+    } else {
+        FilmKind::Dry
+    };
+    let main = solve(build(main_film)?.as_mut(), load as f32, speed)?;
     let dry = if args.dry && lubricated {
-        Some(solve(bearing.as_mut(), false, load as f32, speed)?)
+        Some(solve(build(FilmKind::Dry)?.as_mut(), load as f32, speed)?)
     } else {
         None
     };

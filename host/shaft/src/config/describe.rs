@@ -421,7 +421,7 @@ pub(super) fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescripti
         };
         loads.push(load);
     }
-    // Torque ripple defaults to the mesh order (PHYSICS.md §6.2: sinusoids at mesh frequency).
+    // Torque ripple defaults to the mesh order (docs/physics.md §6.2: sinusoids at mesh frequency).
     let motor = motor.map(|m| Pmsm {
         ripple_order: ripple_order.or(mesh_teeth.map(f64::from)).unwrap_or(1.0),
         ..m

@@ -42,7 +42,7 @@ use std::path::{Path, PathBuf};
 use bearing_host_common::toml_lines::{line_at, TomlLines};
 use serde::Deserialize;
 
-use super::bearing::FilmChoice;
+use super::bearing::FilmKind;
 use super::model::RotorModel;
 
 mod describe;
@@ -120,7 +120,7 @@ pub(super) struct FileBearing {
     pub(super) cxx_n_s_per_m: Option<f64>,
     pub(super) cyy_n_s_per_m: Option<f64>,
     pub(super) config: Option<String>,
-    pub(super) film: Option<FilmChoice>,
+    pub(super) film: Option<FilmKind>,
 }
 
 #[derive(Debug, Deserialize)]

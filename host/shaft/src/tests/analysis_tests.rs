@@ -61,7 +61,7 @@ fn gravity_sag_of_simply_supported_shaft() {
 }
 
 /// Reference: PMSM field-weakening curve (constant torque to P/T, constant power above) and spur
-/// gear forces F_t = T/r_p, F_r = F_t tan α for the PHYSICS.md §6.2 drive (68 N·m, 54 kW,
+/// gear forces F_t = T/r_p, F_r = F_t tan α for the docs/physics.md §6.2 drive (68 N·m, 54 kW,
 /// 21 000 rpm; 17 teeth, module 4 mm, 20°): base speed 7583.26 rpm, 24.555 N·m at 21 000 rpm.
 #[test]
 fn motor_curve_and_gear_forces() {

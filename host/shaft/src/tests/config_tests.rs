@@ -149,7 +149,7 @@ fn roller_bearing_path_is_relative_to_the_shaft_file() {
 /// nearly the same bearing force, and both differ from the dry bearing.
 #[test]
 fn roller_bearing_films() {
-    use crate::bearing::{roller_bearing, BearingState, FilmChoice};
+    use crate::bearing::{roller_bearing, BearingState, FilmKind};
     let path = configs().join("hub_motor.toml");
     let state = BearingState {
         displacement: [0.0, -8.0e-6],
@@ -166,11 +166,11 @@ fn roller_bearing_films() {
         f[1]
     };
     let (int, f32_net, dry) = (
-        force(FilmChoice::Int),
-        force(FilmChoice::F32),
-        force(FilmChoice::Dry),
+        force(FilmKind::Int),
+        force(FilmKind::F32),
+        force(FilmKind::Dry),
     );
-    assert!(roller_bearing(&path, FilmChoice::Regression).is_ok());
+    assert!(roller_bearing(&path, FilmKind::Regression).is_ok());
     assert!(
         (int / f32_net - 1.0).abs() < 5e-3,
         "int {int} N vs f32 {f32_net} N"

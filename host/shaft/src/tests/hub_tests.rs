@@ -1,16 +1,16 @@
-//! The §6.2 hub-motor shaft with the core's bearings: the headline of PHYSICS.md §4 — with the
+//! The §6.2 hub-motor shaft with the core's bearings: the headline of docs/physics.md §4 — with the
 //! film, bearing stiffness is higher than dry and rises with speed — at the static operating
 //! points of the sweep (bearings linearised at the equilibrium under gravity and gear forces).
 
 use std::path::Path;
 
-use crate::bearing::FilmChoice;
+use crate::bearing::FilmKind;
 use crate::config::load_model;
 use crate::operating::{build_bearings, linearise};
 use crate::statics::equilibrium;
 
 /// Largest eigenvalue of the symmetric part of the left bearing's 2×2 stiffness (N/m).
-fn bearing_stiffness(film: FilmChoice, rpm: f64) -> f64 {
+fn bearing_stiffness(film: FilmKind, rpm: f64) -> f64 {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/shaft_hub_motor.toml");
     let mut model = load_model(&path).unwrap();
     for b in &mut model.description.bearings {
@@ -29,11 +29,11 @@ fn lubricated_bearing_is_stiffer_than_dry_and_stiffens_with_speed() {
     let speeds = [3000.0, 12_000.0, 21_000.0];
     let lub: Vec<f64> = speeds
         .iter()
-        .map(|&s| bearing_stiffness(FilmChoice::Regression, s))
+        .map(|&s| bearing_stiffness(FilmKind::Regression, s))
         .collect();
     let dry: Vec<f64> = speeds
         .iter()
-        .map(|&s| bearing_stiffness(FilmChoice::Dry, s))
+        .map(|&s| bearing_stiffness(FilmKind::Dry, s))
         .collect();
     eprintln!("bearing stiffness at {speeds:?} rpm: lubricated {lub:?}, dry {dry:?} N/m");
     for i in 0..speeds.len() {
@@ -62,7 +62,7 @@ fn lubricated_hub_shaft_takes_one_bearing_evaluation_per_step() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/shaft_hub_motor.toml");
     let mut model = load_model(&path).unwrap();
     for b in &mut model.description.bearings {
-        b.spec = b.spec.with_film(FilmChoice::Regression);
+        b.spec = b.spec.with_film(FilmKind::Regression);
     }
     let omega = 21_000.0 * std::f64::consts::PI / 30.0;
     let dt = 2.0 * std::f64::consts::PI / (20.0 * 17.0 * omega);

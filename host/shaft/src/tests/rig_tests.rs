@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use crate::bearing::{BearingSpec, FilmChoice};
+use crate::bearing::{BearingSpec, FilmKind};
 use crate::config::load_model;
 use crate::integrator::{NewtonSettings, Scheme};
 use crate::simulate::{run, RunSettings};
@@ -14,9 +14,9 @@ use crate::spectrum::amplitude_spectrum;
 /// bearing's y displacement, f_bpo (Hz), and the fewest loaded rollers (load > 0) of any
 /// recorded sample.
 ///
-/// Reference: PHYSICS.md §2, f_bpo = (Z f_s / 2)(1 − D/d_m) = 1130.8 Hz for the NU 205
+/// Reference: docs/physics.md §2, f_bpo = (Z f_s / 2)(1 − D/d_m) = 1130.8 Hz for the NU 205
 /// (Z = 12, D = 7.5 mm, d_m = 39 mm) at 14 000 rpm.
-fn rig(film: FilmChoice) -> (Vec<(f64, f64)>, f64, usize) {
+fn rig(film: FilmKind) -> (Vec<(f64, f64)>, f64, usize) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/shaft_nu205_rig.toml");
     let model = load_model(&path).unwrap();
     let specs: Vec<BearingSpec> = model
@@ -87,7 +87,7 @@ fn line_and_others(spec: &[(f64, f64)], f_bpo: f64) -> (f64, f64, f64) {
 /// Dry: the spectrum peaks at f_bpo, 20× above every other line between 50 Hz and 1.5 f_bpo.
 #[test]
 fn nu205_rig_shows_the_outer_race_pass_line_dry() {
-    let (spec, f_bpo, _) = rig(FilmChoice::Dry);
+    let (spec, f_bpo, _) = rig(FilmKind::Dry);
     let (f_peak, line, other) = line_and_others(&spec, f_bpo);
     assert!(
         (f_peak - f_bpo).abs() <= 1.5 * spec[1].0,
@@ -106,9 +106,9 @@ fn nu205_rig_shows_the_outer_race_pass_line_dry() {
 /// and is not asserted.
 #[test]
 fn nu205_rig_lubricated_loads_every_roller_and_the_regression_film_loses_the_line() {
-    let (dry, f_bpo, loaded_dry) = rig(FilmChoice::Dry);
-    let (lub, _, loaded_lub) = rig(FilmChoice::Regression);
-    let (int, _, loaded_int) = rig(FilmChoice::Int);
+    let (dry, f_bpo, loaded_dry) = rig(FilmKind::Dry);
+    let (lub, _, loaded_lub) = rig(FilmKind::Regression);
+    let (int, _, loaded_int) = rig(FilmKind::Int);
     assert_eq!(loaded_lub, 12, "rollers loaded, regression film");
     assert_eq!(loaded_int, 12, "rollers loaded, integer network");
     let (_, line_int, other_int) = line_and_others(&int, f_bpo);

@@ -2,7 +2,7 @@
 //!
 //! Inputs. The isothermal, Newtonian line contact with Barus viscosity depends only on the
 //! dimensionless groups `W, U, G` once the film is scaled by `R` (Dowson & Higginson 1966;
-//! Moes 1992 reduces it further to `M, L`). The numerical solver of PHYSICS.md §5.2 uses
+//! Moes 1992 reduces it further to `M, L`). The numerical solver of docs/physics.md §5.2 uses
 //! Roelands viscosity and Dowson–Higginson density, which bring two more groups: the Roelands
 //! index (through `ln η₀ + 9.67` and `α p₀`) and the pressure level `p_h/p₀`, `p_h` in Pa for
 //! the density law (through `E'` once `W` is given). Hence two input sets:

@@ -1,4 +1,4 @@
-//! The architecture study of PHYSICS.md §5.3 (1–4 hidden layers × 10–20 neurons ×
+//! The architecture study of docs/physics.md §5.3 (1–4 hidden layers × 10–20 neurons ×
 //! tanh/logistic/ReLU × 600–5000 samples): train each combination on the first `N` samples of a
 //! dataset (own 70/15/15 split) and tabulate its held-out test accuracy and training time.
 

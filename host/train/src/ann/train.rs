@@ -43,7 +43,7 @@ pub struct TrainOptions {
     pub target: TargetForm,
     /// Weight-decay coefficient λ.
     pub regularisation: f64,
-    /// Epoch limit (PHYSICS.md §5.3: at most 1000).
+    /// Epoch limit (docs/physics.md §5.3: at most 1000).
     pub max_epochs: usize,
     /// Epochs without validation improvement before stopping (MATLAB's `max_fail` = 6).
     pub patience: usize,
@@ -398,7 +398,7 @@ mod tests {
     }
 
     /// Levenberg–Marquardt learns a closed form: 1×8 tanh on 300 cases of the Moes formula
-    /// (PHYSICS.md §5.1, the reference), test median error below 0.1 % and p99 below 1 %, far
+    /// (docs/physics.md §5.1, the reference), test median error below 0.1 % and p99 below 1 %, far
     /// under the 3 % median error of Dowson–Toyoda on the same cases. Training twice gives the
     /// same weights bit for bit (the reproducibility claim of the committed model, small).
     #[test]

@@ -1,4 +1,4 @@
-//! The training domain of the film network: the input box of PHYSICS.md §5.3 (thesis Table 5.1),
+//! The training domain of the film network: the input box of docs/physics.md §5.3 (thesis Table 5.1),
 //! a Hertz-pressure window and a piezoviscous regime test — widened where the thesis' domain
 //! (Q ≥ 150 N, u_m ≤ 30 m/s, 0.3–3.5 GPa, piezoviscous–elastic only) misses loaded rollers of
 //! the §6 reference machines: the hub motor's rollers at 11 000–21 000 rpm carry 90–180 N at
@@ -13,7 +13,7 @@
 //! is sampled linearly.
 //!
 //! Regime test (defined here, used identically by the core's domain guard): with the Moes
-//! asymptotes `H_RI, H_EI, H_RP, H_EP` (Moes 1992; PHYSICS.md §5.1) a contact is
+//! asymptotes `H_RI, H_EI, H_RP, H_EP` (Moes 1992; docs/physics.md §5.1) a contact is
 //! *piezoviscous–elastic* when
 //! 1. piezoviscous: `ln(H_EP / max(H_RI, H_EI)) ≥ piezo_min_log_ratio` — the piezoviscous
 //!    asymptote is above the isoviscous one, which Moes' formula combines as a near-maximum;
@@ -108,7 +108,7 @@ pub enum OutOfDomain {
 }
 
 impl Default for Domain {
-    /// PHYSICS.md §5.3 (thesis Table 5.1), widened as the module doc says.
+    /// docs/physics.md §5.3 (thesis Table 5.1), widened as the module doc says.
     fn default() -> Self {
         Self {
             load_n: Interval {

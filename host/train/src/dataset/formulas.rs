@@ -1,7 +1,7 @@
 //! The Moes stand-in target of the pipeline tests, and the closed-form film formulas the dataset
 //! and the network use, which live with the solver they are checked against
-//! ([`bearing_ehl::formulas`], PHYSICS.md §5.1). All take the dimensionless groups of
-//! PHYSICS.md §1 (`W = w/(E'R)`, `U = η₀u_m/(E'R)`, `G = αE'`) and return `h/R`.
+//! ([`bearing_ehl::formulas`], docs/physics.md §5.1). All take the dimensionless groups of
+//! docs/physics.md §1 (`W = w/(E'R)`, `U = η₀u_m/(E'R)`, `G = αE'`) and return `h/R`.
 
 pub use bearing_ehl::formulas::{
     dowson_higginson_minimum, dowson_toyoda_central, moes_central, moes_parameters, MoesAsymptotes,

@@ -1,5 +1,5 @@
 //! Training data for the film network: contact cases sampled by a maximin Latin hypercube over
-//! the domain of PHYSICS.md §5.3, solved in parallel by any film solver, written to a resumable
+//! the domain of docs/physics.md §5.3, solved in parallel by any film solver, written to a resumable
 //! JSON-lines file that carries its own metadata.
 //!
 //! - [`domain`]: input box, Hertz window, regime test.
@@ -8,7 +8,7 @@
 //! - [`generate`](mod@generate): deterministic, parallel, resumable generation over a solver closure.
 //! - [`formulas`]: regression and Moes formulas (f64), the latter the pipeline stand-in target.
 //! - [`numerical`]: the numerical EHL solver as the dataset solver.
-//! - [`reference`](mod@reference): check that the reference machines of PHYSICS.md §6 lie in the domain.
+//! - [`reference`](mod@reference): check that the reference machines of docs/physics.md §6 lie in the domain.
 
 pub mod domain;
 pub mod file;
@@ -49,7 +49,7 @@ impl ContactCase {
         self.load_n / self.length_m
     }
 
-    /// Dimensionless `(W, U, G)` of PHYSICS.md §1: `W = w/(E'R)`, `U = η₀u_m/(E'R)`, `G = αE'`.
+    /// Dimensionless `(W, U, G)` of docs/physics.md §1: `W = w/(E'R)`, `U = η₀u_m/(E'R)`, `G = αE'`.
     pub fn dimensionless(&self) -> (f64, f64, f64) {
         let er = self.reduced_modulus_pa * self.reduced_radius_m;
         (
@@ -59,7 +59,7 @@ impl ContactCase {
         )
     }
 
-    /// Maximum Hertz pressure `p_h = √(w E' / (2π R))` (PHYSICS.md §1), Pa.
+    /// Maximum Hertz pressure `p_h = √(w E' / (2π R))` (docs/physics.md §1), Pa.
     pub fn hertz_pressure_pa(&self) -> f64 {
         (self.load_per_length() * self.reduced_modulus_pa
             / (2.0 * std::f64::consts::PI * self.reduced_radius_m))
@@ -95,7 +95,7 @@ impl ContactCase {
     }
 }
 
-/// The Moes stand-in solver (PHYSICS.md §5.1): `(h_c, h_min)` in metres, see
+/// The Moes stand-in solver (docs/physics.md §5.1): `(h_c, h_min)` in metres, see
 /// [`formulas::moes_central`] and [`formulas::moes_minimum`]. For pipeline tests only.
 pub fn moes_solver(case: &ContactCase) -> Result<(f64, f64), String> {
     if !case.is_physical() {

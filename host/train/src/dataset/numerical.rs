@@ -1,4 +1,4 @@
-//! The numerical EHL solver (`bearing_ehl`, PHYSICS.md §5.2) as a dataset solver: the film
+//! The numerical EHL solver (`bearing_ehl`, docs/physics.md §5.2) as a dataset solver: the film
 //! network's real training target.
 //!
 //! The solver works per unit length (w = Q/l): Q and l enter the isothermal line contact only
@@ -10,7 +10,7 @@
 //! **Plausibility.** A solve that meets the convergence criteria can still have converged to a
 //! wrong solution: at the high-M corner of the domain (M ≈ 900–1500, L ≈ 5, p_h ≈ 3.4 GPa)
 //! the solver has returned films 2–40 times below Moes' formula with h_min = h_c, a collapsed
-//! film. The formulas and full solutions disagree by tens of percent at most (PHYSICS.md §5.1),
+//! film. The formulas and full solutions disagree by tens of percent at most (docs/physics.md §5.1),
 //! so a central film outside [½, 2] × Moes' is recorded as a failure with that reason rather
 //! than taught to the network — one such case carried most of the training loss.
 
@@ -118,7 +118,7 @@ mod tests {
 
     /// A moderate contact (1000 N on 10 mm, 2 m/s, R = 10 mm, α = 20 GPa⁻¹, η₀ = 0.04 Pa·s,
     /// p_h ≈ 0.6 GPa): the numerical central film lies within 25 % of Dowson–Toyoda and of Moes
-    /// (PHYSICS.md §5.1: the formulas disagree with full solutions by several to more than ten
+    /// (docs/physics.md §5.1: the formulas disagree with full solutions by several to more than ten
     /// percent), and 0.5 h_c < h_min < h_c.
     #[test]
     fn numerical_film_is_near_the_formulas() {

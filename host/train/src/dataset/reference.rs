@@ -1,9 +1,9 @@
-//! Does the training domain contain the reference machines of PHYSICS.md §6?
+//! Does the training domain contain the reference machines of docs/physics.md §6?
 //!
 //! Until the bearing model computes roller loads, the most loaded roller is estimated with
 //! Stribeck's formula `Q_max = 4.08 F / Z` (zero clearance, line contact; Harris & Kotzalas,
 //! *Rolling Bearing Analysis*, 5th ed., §7.2) and the entrainment speed with the pure-rolling
-//! kinematics of PHYSICS.md §2. Both raceway contacts (inner: convex, outer: concave) are
+//! kinematics of docs/physics.md §2. Both raceway contacts (inner: convex, outer: concave) are
 //! checked at every speed of each case's sweep. The effective length is taken as the roller
 //! length (edge radii are not given in §6). Rollers away from the load line carry less than
 //! `Q_max` and drop below the 50 N / 0.15 GPa floor near the edge of the loaded zone; those
@@ -15,7 +15,7 @@ use super::{ContactCase, Domain};
 /// Geometry and lubricant of one reference bearing.
 #[derive(Clone, Copy, Debug)]
 pub struct ReferenceBearing {
-    /// Case name (section of PHYSICS.md).
+    /// Case name (section of docs/physics.md).
     pub name: &'static str,
     /// Pitch diameter d_m (m).
     pub pitch_diameter_m: f64,
@@ -50,7 +50,7 @@ pub struct ReferenceContact {
     pub verdict: Result<(), OutOfDomain>,
 }
 
-/// E' of two equal solids, `E/(1−ν²)` (PHYSICS.md §1).
+/// E' of two equal solids, `E/(1−ν²)` (docs/physics.md §1).
 const fn reduced_modulus(e: f64, nu: f64) -> f64 {
     e / (1.0 - nu * nu)
 }
@@ -62,7 +62,7 @@ impl ReferenceBearing {
         let dm = self.pitch_diameter_m;
         let gamma = d / dm;
         let omega = speed_rpm * std::f64::consts::PI / 30.0;
-        let u_m = dm / 4.0 * (1.0 - gamma * gamma) * omega; // PHYSICS.md §2
+        let u_m = dm / 4.0 * (1.0 - gamma * gamma) * omega; // docs/physics.md §2
         let r_i = (dm - d) / 2.0;
         let r_o = (dm + d) / 2.0;
         let r_in = (d / 2.0) * r_i / (r_i + d / 2.0);
@@ -167,7 +167,7 @@ pub fn check_reference_cases(domain: &Domain) -> Vec<ReferenceContact> {
 mod tests {
     use super::*;
 
-    /// Hand numbers for §6.1 (PHYSICS.md §1–2): Q_max = 4.08·750/12 = 255 N; at 15 000 rpm
+    /// Hand numbers for §6.1 (docs/physics.md §1–2): Q_max = 4.08·750/12 = 255 N; at 15 000 rpm
     /// u_m = (0.039/4)(1 − (7.5/39)²)·1570.8 = 14.75 m/s; R_in = 3.75·15.75/19.5 mm = 3.029 mm;
     /// p_h = √(w E'/(2πR)) = √(28 333 · 230.77e9 / (2π · 3.029e-3)) = 0.586 GPa.
     #[test]

@@ -9,7 +9,7 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Result};
-use bearing_shaft::bearing::{BearingSpec, FilmChoice, LinearBearing};
+use bearing_shaft::bearing::{BearingSpec, FilmKind, LinearBearing};
 use bearing_shaft::config::load_model;
 use bearing_shaft::integrator::{NewtonSettings, Scheme};
 use bearing_shaft::loads::Load;
@@ -60,8 +60,8 @@ struct ModelArgs {
     linear_damping: f64,
     /// Film model of every roller bearing (overrides the file; `sweep` runs this film against
     /// dry, so it must not be `dry` there).
-    #[arg(long, value_enum)]
-    film: Option<FilmArg>,
+    #[arg(long, value_parser = film_arg())]
+    film: Option<FilmKind>,
     /// Print JSON instead of a table.
     #[arg(long)]
     json: bool,
@@ -175,7 +175,7 @@ struct SweepArgs {
     model: ModelArgs,
     #[command(flatten)]
     time: TimeArgs,
-    /// Speeds (rpm, comma separated); default the PHYSICS.md §6.2 list.
+    /// Speeds (rpm, comma separated); default the docs/physics.md §6.2 list.
     #[arg(long, value_delimiter = ',')]
     speeds_rpm: Option<Vec<f64>>,
     /// Envelope plot.
@@ -183,23 +183,11 @@ struct SweepArgs {
     plot: PathBuf,
 }
 
-#[derive(Clone, Copy, Debug, ValueEnum)]
-enum FilmArg {
-    Int,
-    F32,
-    Regression,
-    Dry,
-}
-
-impl FilmArg {
-    fn choice(self) -> FilmChoice {
-        match self {
-            FilmArg::Int => FilmChoice::Int,
-            FilmArg::F32 => FilmChoice::F32,
-            FilmArg::Regression => FilmChoice::Regression,
-            FilmArg::Dry => FilmChoice::Dry,
-        }
-    }
+/// The parser of `--film`: one of the names of the core's [`FilmKind`], listed in `--help`.
+fn film_arg() -> impl clap::builder::TypedValueParser<Value = FilmKind> {
+    use clap::builder::TypedValueParser as _;
+    clap::builder::PossibleValuesParser::new(FilmKind::ALL.map(FilmKind::name))
+        .try_map(|name| name.parse::<FilmKind>())
 }
 
 /// Runs `bearing shaft …`.
@@ -238,7 +226,7 @@ fn load(m: &ModelArgs) -> Result<RotorModel> {
     let mut model = load_model(&m.config)?;
     if let Some(film) = m.film {
         for b in &mut model.description.bearings {
-            b.spec = b.spec.with_film(film.choice());
+            b.spec = b.spec.with_film(film);
         }
     }
     if let Some(k) = m.linear_bearings {

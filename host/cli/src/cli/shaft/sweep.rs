@@ -4,7 +4,7 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use anyhow::{bail, Result};
-use bearing_shaft::bearing::{BearingSpec, FilmChoice};
+use bearing_shaft::bearing::{BearingSpec, FilmKind};
 use bearing_shaft::plots;
 use bearing_shaft::sweep::{hub_motor_speeds_rpm, sweep};
 
@@ -30,7 +30,7 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
         matches!(
             b.spec,
             BearingSpec::Roller {
-                film: FilmChoice::Dry,
+                film: FilmKind::Dry,
                 ..
             }
         )

@@ -1,12 +1,17 @@
 //! Fixed-cost f32 elementary functions.
 //!
 //! The bearing step must take the same number of instructions for every input
-//! (ARCHITECTURE.md), and `libm`'s `logf`/`expf`/`powf` branch on their argument. These
+//! (docs/architecture.md), and `libm`'s `logf`/`expf`/`powf` branch on their argument. These
 //! versions use only `+ − ×`, bit manipulation and selects (polynomials instead of divisions), so their cost is fixed and
 //! their results are bit-identical on the host and on the Cortex-M4F (no fused operations).
 //! Accuracy (checked in the tests against f64): a few ulp over the whole positive range.
+//!
+//! The film network has its own logarithm and exponentials, by series (`series`): they
+//! round differently from these, and each family's bits are pinned by its users (see there).
 
 use crate::lanes::Real;
+
+pub mod series;
 
 const SQRT_2: f32 = core::f32::consts::SQRT_2;
 /// 1.5·2²³: adding and subtracting it rounds an f32 of magnitude < 2²² to the nearest integer.
@@ -62,7 +67,7 @@ fn horner<T: Real, const N: usize>(c: &[f32; N], x: T) -> T {
 /// n = t − 1.5·2²³ exactly, and `(bits(t) − bits(1.5·2²³) + 127) << 23` is the pattern of 2ⁿ
 /// (biased exponent n + 127, zero mantissa). No float-to-integer conversion: Rust's `as i32`
 /// saturates, which costs a compare chain around `cvttss2si` on x86 and keeps SIMD lanes
-/// from forming. Shared by the core's `exp`/`exp2` and the network's (`film::ann::fastmath`).
+/// from forming. Shared by [`exp`]/[`exp2`] and the network's (`series`).
 #[inline(always)]
 pub(crate) fn round_with_pow2(x: f32) -> (f32, f32) {
     let shifted = x + ROUNDER;

@@ -1,26 +1,31 @@
-//! Fixed-cost f32 elementary functions for the network: the same instruction sequence for every
-//! argument (no data-dependent branches, no library calls whose cost varies — `libm::tanhf`
-//! varies by ±25 %, EMBEDDED.md), accurate to a few f32 ulps over the range the network uses.
+//! Fixed-cost f32 elementary functions of the film network, by series: the same instruction
+//! sequence for every argument (no data-dependent branches, no library calls whose cost varies — `libm::tanhf`
+//! varies by ±25 %, docs/embedded.md), accurate to a few f32 ulps over the range the network uses.
 //!
-//! - `ln`: exponent/mantissa split with the mantissa folded into [√½, √2) by integer arithmetic
+//! They round differently from the least-squares polynomials of the parent module (`super::ln`,
+//! `super::exp`), which the bearing step uses: the network's outputs, and with them the
+//! committed weights' regression tests and the recorded traces, depend on these bits, the step's
+//! results on those; so both families stay, named by their method.
+//!
+//! - `ln_atanh`: exponent/mantissa split with the mantissa folded into [√½, √2) by integer arithmetic
 //!   (the reduction of musl's `logf`), then `ln m = 2 atanh(s)`, `s = (m−1)/(m+1)`, as an odd
 //!   series to s⁹ (|s| ≤ 0.172, truncation < 1e-9). Returns a finite value for *every* bit pattern
 //!   (zero, negative, ∞, NaN give meaningless but finite numbers); callers guard validity.
-//! - `exp2`: argument clamped to [−126, 126], split into nearest integer k (by the 1.5·2²³
-//!   rounding constant) and f ∈ [−½, ½]; `2^f = e^{f ln 2}` by its Taylor polynomial of degree 7
-//!   (truncation < 1e-8; Estrin's scheme, a short dependent chain), `2^k` assembled in the
-//!   exponent bits.
+//! - `exp_taylor`: argument clamped to ±87, Cody–Waite reduction `x = k ln 2 + r` with the
+//!   nearest integer k (by the 1.5·2²³ rounding constant) and |r| ≤ ½ ln 2; `e^r` by its Taylor
+//!   polynomial of degree 7 (truncation < 1e-8; Estrin's scheme, a short dependent chain), `2^k`
+//!   assembled in the exponent bits.
 //! - `2^k` is built from the bits of the rounding sum `y + 1.5·2²³` itself, whose mantissa holds
-//!   k as an integer (`crate::math::round_with_pow2`, shared with the core's own `exp`), not by
+//!   k as an integer (`super::round_with_pow2`, shared with the step's `exp`), not by
 //!   a float→int conversion: Rust's `as i32`
 //!   saturates, which on x86-64 costs a compare-and-select around `cvttss2si` and keeps LLVM from
 //!   vectorising a layer's activations; integer adds and a shift vectorise with SSE2 and are
 //!   single instructions on the M4. The result is bit-identical to the conversion's.
 //! - `tanh x = (e^{2x} − 1)/(e^{2x} + 1)` on x clamped to ±9 (tanh 9 = 1 − 3·10⁻⁸);
 //!   `logistic x = 1/(1 + e^{−x})` on x clamped to ±30. Both inline into the caller's loop so a
-//!   layer's neurons are evaluated lane-wise ([`super::float::DenseF32::forward`]).
+//!   layer's neurons are evaluated lane-wise (`film::ann::float::DenseF32::forward`).
 
-use crate::math::round_with_pow2;
+use super::round_with_pow2;
 
 /// Branch-free clamp (`f32::clamp` panics on bad bounds and `max`/`min` may become libcalls
 /// without an FPU `vmaxnm`).
@@ -36,7 +41,7 @@ pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
 
 /// Natural logarithm (see the module doc); finite for every input.
 #[inline]
-pub fn ln(x: f32) -> f32 {
+pub fn ln_atanh(x: f32) -> f32 {
     let ix = x.to_bits().wrapping_add(0x3f80_0000 - 0x3f35_04f3);
     let k = ((ix >> 23) as i32).wrapping_sub(0x7f);
     let m = f32::from_bits((ix & 0x007f_ffff).wrapping_add(0x3f35_04f3));
@@ -61,14 +66,6 @@ fn exp_reduced(t: f32) -> f32 {
     low + t4 * high
 }
 
-/// 2^x (see the module doc); NaN in, NaN out.
-#[inline]
-pub fn exp2(x: f32) -> f32 {
-    let x = clamp(x, -126.0, 126.0);
-    let (k, scale) = round_with_pow2(x);
-    exp_reduced((x - k) * core::f32::consts::LN_2) * scale
-}
-
 /// ln 2 split for Cody & Waite's reduction (Cody & Waite 1980, *Software Manual for the
 /// Elementary Functions*): the high part has trailing zero bits so `k·LN2_HI` is exact.
 const LN2_HI: f32 = 0.693_145_75;
@@ -85,7 +82,7 @@ fn exp_in_range(x: f32) -> f32 {
 
 /// e^x (see `exp_in_range`); x clamped to ±87.
 #[inline]
-pub fn exp(x: f32) -> f32 {
+pub fn exp_taylor(x: f32) -> f32 {
     exp_in_range(clamp(x, -87.0, 87.0))
 }
 
@@ -111,7 +108,7 @@ mod tests {
     fn ln_matches_libm() {
         let mut x = 1e-20f32;
         while x < 1e20 {
-            let (got, want) = (ln(x), libm::logf(x));
+            let (got, want) = (ln_atanh(x), libm::logf(x));
             assert!(
                 (got - want).abs() <= 2e-7 * want.abs().max(1.0),
                 "ln({x}) = {got}, libm {want}"
@@ -120,20 +117,15 @@ mod tests {
         }
     }
 
-    /// Reference: libm `exp2f`/`expf`; relative error ≤ 4 ulp over the clamped range.
+    /// Reference: libm `expf`; relative error ≤ 4 ulp over the clamped range.
     #[test]
     fn exp_matches_libm() {
         let mut x = -86.0f32;
         while x < 86.0 {
-            let (got, want) = (exp(x), libm::expf(x));
+            let (got, want) = (exp_taylor(x), libm::expf(x));
             assert!(
                 (got / want - 1.0).abs() < 5e-7,
                 "exp({x}) = {got}, libm {want}"
-            );
-            let (got, want) = (exp2(x), libm::exp2f(x));
-            assert!(
-                (got / want - 1.0).abs() < 5e-7,
-                "exp2({x}) = {got}, libm {want}"
             );
             x += 0.173;
         }
@@ -190,7 +182,7 @@ mod tests {
             f32::MIN_POSITIVE / 4.0,
             f32::MAX,
         ] {
-            assert!(ln(x).is_finite(), "ln({x})");
+            assert!(ln_atanh(x).is_finite(), "ln({x})");
         }
     }
 }
