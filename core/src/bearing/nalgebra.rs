@@ -120,39 +120,31 @@ impl<const Z: usize> BearingOutput<Z> {
 
 #[cfg(test)]
 mod tests {
-    use crate::film::Regression;
-    use crate::params::Crown;
-    use crate::{
-        Bearing, BearingGeometry, BearingParams, ContactLaw, Lubricant, Material, OperatingState,
-    };
+    use crate::{Bearing, BearingDesign, FilmKind, OperatingState};
 
     /// A loaded, lubricated hub-motor bearing (docs/physics.md §6.2: d_m 60 mm, D 8.8 mm × 15 mm,
-    /// 17 rollers): every nalgebra view holds the output's numbers at the output's places, and
-    /// the views agree with each other.
+    /// 17 rollers; here uncrowned with 5 µm clearance): every nalgebra view holds the output's
+    /// numbers at the output's places, and the views agree with each other.
     #[test]
     fn views_of_a_hub_motor_step_hold_the_output() {
-        let geometry = BearingGeometry::new(0.060, 0.0088, 0.015, 17, Crown::None, 5.0e-6).unwrap();
-        let oil = Lubricant::new(0.08, 2.1e-8, 833.8).unwrap();
-        let params = BearingParams::new(
-            geometry,
-            Material::STEEL,
-            Material::STEEL,
-            oil,
-            ContactLaw::Palmgren,
-            1.0e-5,
-        )
+        let params = BearingDesign {
+            crown_scale: 0.0,
+            radial_clearance_m: 5.0e-6,
+            ..BearingDesign::HUB_MOTOR
+        }
+        .params()
         .unwrap();
-        let mut bearing = Bearing::<17, 10>::new(params).unwrap();
+        let mut bearing = Bearing::<17, 10>::new(params, FilmKind::Regression).unwrap();
+        bearing.set_cage_angle(0.3).unwrap();
         // Displaced 12 µm along x and 4 µm along −y, tilted, moving, at 3000 rpm.
         let state = OperatingState::new(
             [12.0e-6, -4.0e-6],
             [0.01, -0.02],
             [1.0e-4, 0.0],
             3000.0 * core::f32::consts::PI / 30.0,
-            0.3,
         )
         .unwrap();
-        let out = *bearing.settle(&Regression, &state, 4);
+        let out = *bearing.settle(&state, 4).unwrap();
         assert!(out.force_n[0] < -100.0, "loaded along x: {:?}", out.force_n);
 
         let force = out.force_vector_n();
