@@ -32,9 +32,9 @@ fn regression(c: &ContactInput) -> (f64, f64) {
     let u = f64::from(c.viscosity_pa_s) * f64::from(c.entrainment_speed_m_s) / (e * r);
     let g = f64::from(c.pressure_viscosity_pa_inv) * e;
     // The fallback is the regression model's complete film: Dowson–Toyoda / Dowson–Higginson
-    // blended root-sum-square with Martin's h_c/R = 6U/W and h_0/R = 4.896U/W.
+    // blended root-sum-square with Martin's h₀/R = 4.896U/W (the central and minimum gap alike).
     (
-        r * (3.06 * g.powf(0.56) * u.powf(0.69) * w.powf(-0.10)).hypot(6.0 * u / w),
+        r * (3.06 * g.powf(0.56) * u.powf(0.69) * w.powf(-0.10)).hypot(4.896 * u / w),
         r * (2.65 * g.powf(0.54) * u.powf(0.70) * w.powf(-0.13)).hypot(4.896 * u / w),
     )
 }

@@ -28,7 +28,7 @@
 //! **Accuracy.** Linear interpolation of a film e ∝ Q^p between nodes Δλ apart is off by at
 //! most (p·Δλ)²/8: 2·10⁻⁵ for EHL films (p ≈ −0.1), 0.2 % even for |p| = 1.
 
-use crate::film::{ContactInput, FilmModel, MARTIN_CENTRAL, MARTIN_MINIMUM};
+use crate::film::{ContactInput, FilmModel};
 use crate::lanes::Real;
 use crate::math::{exp, exp_in_range, ln, max, min, sqrt};
 
@@ -244,8 +244,7 @@ impl FilmTable {
         let film = model.film(&ContactInput { load_n, ..*contact });
         let hydro = martin / load_n;
         let central = ehl_part(film.central_m, hydro) * inv_speed_scale;
-        let minimum =
-            ehl_part(film.minimum_m, hydro * (MARTIN_MINIMUM / MARTIN_CENTRAL)) * inv_speed_scale;
+        let minimum = ehl_part(film.minimum_m, hydro) * inv_speed_scale;
         if let Some(slot) = self.central.get_mut(k).and_then(|c| c.get_mut(i)) {
             *slot = central;
         }
@@ -423,7 +422,7 @@ impl StepFilms<'_> {
             .zip(last.central.iter())
         {
             let hm = last.cell.interpolate(minimum).0;
-            let hr_min = T::splat(b) * last.inv_load * T::splat(MARTIN_MINIMUM / MARTIN_CENTRAL);
+            let hr_min = T::splat(b) * last.inv_load;
             *o = (
                 central * scale,
                 (hm * hm + hr_min * hr_min).sqrt_non_negative() * scale,
@@ -469,10 +468,10 @@ pub(super) mod tests {
         contacts_with(speed_m_s, MODULUS_PA)
     }
 
-    /// Martin's coefficients B = MARTIN_CENTRAL·η₀·u·R·l of the contacts.
+    /// Martin's coefficients B = MARTIN·η₀·u·R·l of the contacts.
     pub(in crate::bearing) fn martin(c: &[ContactInput; 2]) -> [f32; 2] {
         c.map(|c| {
-            MARTIN_CENTRAL
+            crate::film::MARTIN
                 * c.viscosity_pa_s
                 * c.entrainment_speed_m_s
                 * c.reduced_radius_m

@@ -344,7 +344,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             let ln_2u = core::f32::consts::LN_2 + ln(speed) - logs.ln_er;
             ContactContext {
                 template,
-                martin: 6.0 * speed * template.reduced_radius_m * template.length_m,
+                martin: crate::film::MARTIN * speed * template.reduced_radius_m * template.length_m,
                 ln_m_offset: logs.ln_ler + 0.5 * ln_2u,
                 ln_l: logs.ln_g + 0.25 * ln_2u,
             }

@@ -172,7 +172,7 @@ fn reference_roller(p: &BearingParams, slices: usize, geometric: f64, speed: f64
     let film = |q: f64, r: f64| -> f64 {
         let (w, u, gg) = (q / (l * e * r), eta * um / (e * r), alpha * e);
         let ehl = 3.06 * r * gg.powf(0.56) * u.powf(0.69) * w.powf(-0.1);
-        let martin = 6.0 * eta * um * r * l / q;
+        let martin = 4.896 * eta * um * r * l / q;
         (ehl * ehl + martin * martin).sqrt()
     };
     let (mut lo, mut hi) = (-1e-3f64, 1e-3f64);

@@ -2,22 +2,21 @@
 //!
 //! Martin's solution with the Reynolds exit condition (Martin 1916; Hamrock, *Fundamentals of
 //! Fluid Film Lubrication*, §21.2): a rigid cylinder on a plane with gap h₀ at the outlet carries
-//! w = 4.896·η₀u_mR/h₀ per unit length, i.e. h₀/R = 4.896·U/W. At X = 0 the film is
-//! h_c/R = 6·U/W, Moes' rigid iso-viscous asymptote H_RI = 3/M (docs/physics.md §5.1).
+//! w = 4.896·η₀u_mR/h₀ per unit length, i.e. h₀/R = 4.896·U/W (docs/physics.md §5.1). A rigid
+//! cylinder's gap h₀ + x²/2R is smallest at X = 0, the contact centre, so its central and
+//! minimum films are the same gap: one constant serves both. (Moes' rigid iso-viscous asymptote
+//! H_RI = 3/M, i.e. h/R = 6·U/W, is an interpolation end of his fit and 22 % above Martin's
+//! solution, which the numerical solver reproduces to < 1 %: `bearing-ehl`'s
+//! `martin_rigid_isoviscous_limit`.)
 
 use super::{ContactInput, Film, FilmModel, FilmSource, ServedLoads};
 
-/// Martin's minimum-film constant: h₀/R = 4.896·U/W.
-pub const MARTIN_MINIMUM: f32 = 4.896;
-/// Martin's central-film constant: h_c/R = 6·U/W (Moes H_RI = 3/M).
-pub const MARTIN_CENTRAL: f32 = 6.0;
+/// Martin's constant: h₀/R = 4.896·U/W (Martin 1916, Reynolds exit condition).
+pub const MARTIN: f32 = 4.896;
 
-/// Martin's central film h_c = 6·η₀u_m·R·l/Q (m) for load `Q` (N).
-pub fn martin_central_m(contact: &ContactInput) -> f32 {
-    MARTIN_CENTRAL
-        * contact.viscosity_pa_s
-        * contact.entrainment_speed_m_s
-        * contact.reduced_radius_m
+/// Martin's film h₀ = 4.896·η₀u_m·R·l/Q (m) for load `Q` (N): the central and the minimum gap.
+pub fn martin_film_m(contact: &ContactInput) -> f32 {
+    MARTIN * contact.viscosity_pa_s * contact.entrainment_speed_m_s * contact.reduced_radius_m
         / contact.load_per_length_n_per_m()
 }
 
@@ -28,7 +27,7 @@ pub fn martin_load_per_length(
     reduced_radius_m: f32,
     gap_m: f32,
 ) -> f32 {
-    MARTIN_MINIMUM * viscosity_pa_s * entrainment_speed_m_s * reduced_radius_m / gap_m
+    MARTIN * viscosity_pa_s * entrainment_speed_m_s * reduced_radius_m / gap_m
 }
 
 /// Martin's hydrodynamic film model.
@@ -46,13 +45,13 @@ impl FilmModel for Hydrodynamic {
     }
 
     fn film(&self, contact: &ContactInput) -> Film {
-        let central_m = martin_central_m(contact);
+        let gap_m = martin_film_m(contact);
         let film = Film {
-            central_m,
-            minimum_m: central_m * (MARTIN_MINIMUM / MARTIN_CENTRAL),
+            central_m: gap_m,
+            minimum_m: gap_m,
             source: FilmSource::Regression,
         };
-        if contact.is_valid() && central_m.is_finite() {
+        if contact.is_valid() && gap_m.is_finite() {
             film
         } else {
             Film::ZERO

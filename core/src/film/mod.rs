@@ -72,7 +72,7 @@ impl Film {
 ///
 /// The film is the *complete* isothermal film of the contact at any load, as the numerical
 /// solver of docs/physics.md §5.2 would give it: elastic–piezoviscous where the contact is loaded,
-/// tending to Martin's rigid iso-viscous film (h_c/R = 6U/W) as the load vanishes. The bearing's
+/// tending to Martin's rigid iso-viscous film (h₀/R = 4.896U/W) as the load vanishes. The bearing's
 /// film–load coupling relies on that rise at light load for a continuous separation of the
 /// rollers (`bearing::coupling`); a model of the EHL regime alone blends itself with Martin's
 /// film, as [`Regression`] does.
@@ -146,9 +146,7 @@ mod regime;
 mod regression;
 
 pub use groups::LnGroups;
-pub use hydrodynamic::{
-    martin_central_m, martin_load_per_length, Hydrodynamic, MARTIN_CENTRAL, MARTIN_MINIMUM,
-};
+pub use hydrodynamic::{martin_film_m, martin_load_per_length, Hydrodynamic, MARTIN};
 pub use regime::{Regime, RegimeAxis};
 pub use regression::{
     dowson_higginson_minimum_m, dowson_toyoda_central_m, moes_central, Regression,

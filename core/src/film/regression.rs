@@ -16,7 +16,7 @@
 //! Martin's film, so a separating roller keeps a finite film and a continuous load.
 
 use super::groups::LnGroups;
-use super::hydrodynamic::{martin_central_m, MARTIN_CENTRAL, MARTIN_MINIMUM};
+use super::hydrodynamic::martin_film_m;
 use super::{ContactInput, Film, FilmModel, FilmSource, ServedLoads};
 use crate::math::{exp, pow, select, sqrt};
 
@@ -74,11 +74,10 @@ impl FilmModel for Regression {
             dowson_toyoda_central_m(&g, r),
             dowson_higginson_minimum_m(&g, r),
         );
-        let martin = martin_central_m(contact);
-        let martin_min = martin * (MARTIN_MINIMUM / MARTIN_CENTRAL);
+        let martin = martin_film_m(contact);
         let film = Film {
             central_m: sqrt(central * central + martin * martin),
-            minimum_m: sqrt(minimum * minimum + martin_min * martin_min),
+            minimum_m: sqrt(minimum * minimum + martin * martin),
             source: FilmSource::Regression,
         };
         let ok = contact.is_valid() & film.central_m.is_finite() & film.minimum_m.is_finite();
@@ -123,8 +122,8 @@ mod tests {
         let r = c.reduced_radius_m as f64;
         let dt = 3.06 * g.powf(0.56) * u.powf(0.69) * w.powf(-0.10) * r;
         let dh = 2.65 * g.powf(0.54) * u.powf(0.70) * w.powf(-0.13) * r;
-        // Blended with Martin's h_c/R = 6U/W and h_0/R = 4.896U/W.
-        let hc = dt.hypot(6.0 * u / w * r);
+        // Blended with Martin's h₀/R = 4.896U/W, the central and minimum gap alike.
+        let hc = dt.hypot(4.896 * u / w * r);
         let hm = dh.hypot(4.896 * u / w * r);
         // At this load (M ≈ 18) the blend is a small correction.
         assert!(hc / dt - 1.0 < 0.01 && hm / dh - 1.0 < 0.01);
@@ -165,14 +164,14 @@ mod tests {
             c.load_n as f64
                 / (c.length_m as f64 * c.reduced_modulus_pa as f64 * c.reduced_radius_m as f64),
         );
-        let martin = 6.0 * u / w * c.reduced_radius_m as f64;
+        let martin = 4.896 * u / w * c.reduced_radius_m as f64;
         let f = Regression.film(&c);
         assert!(
             (f.central_m as f64 / martin - 1.0).abs() < 1e-3,
             "{} vs {martin}",
             f.central_m
         );
-        assert!((f.minimum_m as f64 / (martin * 4.896 / 6.0) - 1.0).abs() < 1e-3);
+        assert!((f.minimum_m as f64 / martin - 1.0).abs() < 1e-3);
     }
 
     #[test]

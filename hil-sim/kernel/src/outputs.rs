@@ -11,7 +11,7 @@
 //! | step record | instructions u32 (TIM2), SysTick counts u32, F_x, F_y, θ_c (f32), then per roller Q, h_in, h_out, δ (f32) and the two film sources (u8) |
 //! | trailer (28 bytes) | magic `BRGEND\0\0`, status u32 (0 = every step done), peak stack of the whole program u32, stack below the replay loop u32 (the step's own use), TIM2 and SysTick counts of a block of 1000 `nop` u32 ×2 (the calibration) |
 //!
-//! This file uses nothing from `std`: the firmware includes it with `#[path]`.
+//! This file uses nothing from `std`: the firmware links this crate too.
 
 pub use bearing_core::film::FilmSource;
 

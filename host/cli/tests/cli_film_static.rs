@@ -29,7 +29,7 @@ fn film_json_matches_the_closed_forms() {
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     // Hertz (docs/physics.md §1) and Dowson–Toyoda (§5.1) blended root-sum-square with Martin's
-    // h_c/R = 6U/W (the regression model's complete film), computed here in f64.
+    // h₀/R = 4.896U/W (the regression model's complete film), computed here in f64.
     let (q, l, u, r, e, a, eta) = (1500.0f64, 0.015, 10.0, 0.0035, 2.3077e11, 2.1e-8, 0.08);
     let w = q / l;
     let b = (8.0 * w * r / (std::f64::consts::PI * e)).sqrt();
@@ -44,7 +44,7 @@ fn film_json_matches_the_closed_forms() {
         .expect("regression entry");
     let dt =
         3.06 * r * (a * e).powf(0.56) * (eta * u / (e * r)).powf(0.69) * (w / (e * r)).powf(-0.10);
-    let martin = 6.0 * r * (eta * u / (e * r)) / (w / (e * r));
+    let martin = 4.896 * r * (eta * u / (e * r)) / (w / (e * r));
     let hc = dt.hypot(martin);
     assert!(
         rel(&regression["central_film_m"], hc) < 1e-4,

@@ -57,6 +57,14 @@ fn martin_rigid_isoviscous_limit() {
         "h0 {} vs Martin {martin}: {err}",
         s.min_film_m
     );
+    // A rigid cylinder's gap is smallest at the contact centre: the central film is the same
+    // gap (the core's hydrodynamic film uses one constant for both).
+    let central_err = s.central_film_m / martin - 1.0;
+    assert!(
+        central_err.abs() < 0.01,
+        "h_c {} vs Martin {martin}: {central_err}",
+        s.central_film_m
+    );
 }
 
 /// Moes' formula (Barus, incompressible; Moes 1992 as given by Venner & Lubrecht 2000) over the

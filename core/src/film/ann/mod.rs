@@ -80,8 +80,8 @@ pub struct Prepared {
     pub ln_radius: f32,
     /// `ln(h_DT/R)`, `ln(h_DH/R)`.
     pub ln_regression_over_r: [f32; 2],
-    /// `ln(h_RI/R)` of Martin's central and minimum film, `ln(6U/W)` and `ln(4.896U/W)`.
-    pub ln_martin_over_r: [f32; 2],
+    /// `ln(h₀/R)` of Martin's rigid iso-viscous film, `ln(4.896U/W)` (central and minimum).
+    pub ln_martin_over_r: f32,
 }
 
 const LN_2: f32 = core::f32::consts::LN_2;
@@ -90,8 +90,7 @@ const LN_3: f32 = 1.098_612_3;
 const LN_2_621: f32 = 0.963_555_9;
 const LN_1_287: f32 = 0.252_313_93;
 const LN_1_311: f32 = 0.270_790_2;
-/// ln 6 and ln 4.896, Martin's central and minimum constants (`film::hydrodynamic`).
-const LN_6: f32 = 1.791_759_5;
+/// ln 4.896, Martin's constant (`film::hydrodynamic`).
 const LN_4_896: f32 = 1.588_329_6;
 
 /// `lo ≤ v ≤ hi` for `0 < lo ≤ hi` finite, on the bit patterns: positive floats order like
@@ -158,7 +157,7 @@ pub fn prepare(c: &ContactInput) -> Prepared {
             regression::ln_central_over_r(ln_w, ln_u, ln_g),
             regression::ln_minimum_over_r(ln_w, ln_u, ln_g),
         ],
-        ln_martin_over_r: [LN_6 + ln_u - ln_w, LN_4_896 + ln_u - ln_w],
+        ln_martin_over_r: LN_4_896 + ln_u - ln_w,
     }
 }
 
@@ -174,13 +173,11 @@ pub fn finish(p: &Prepared, y: [f32; 2], source: FilmSource) -> Film {
 #[inline(always)]
 fn fallback_films(p: &Prepared) -> [f32; 2] {
     let mut films = [0.0f32; 2];
+    // Martin's gap is the central and the minimum film alike: one exponential for both.
+    let hydro = crate::math::series::exp_taylor(p.ln_radius + p.ln_martin_over_r);
     for (k, h) in films.iter_mut().enumerate() {
         let reg = p.ln_regression_over_r.get(k).copied().unwrap_or(0.0);
-        let martin = p.ln_martin_over_r.get(k).copied().unwrap_or(0.0);
-        let (ehl, hydro) = (
-            crate::math::series::exp_taylor(p.ln_radius + reg),
-            crate::math::series::exp_taylor(p.ln_radius + martin),
-        );
+        let ehl = crate::math::series::exp_taylor(p.ln_radius + reg);
         *h = crate::math::sqrt(ehl * ehl + hydro * hydro);
     }
     films
