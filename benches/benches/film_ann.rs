@@ -1,5 +1,5 @@
 //! Film network inference cost (goal: ≤ 100 ns per contact for both the f32 and the integer
-//! network, issue 4), beside the regression formulas they replace.
+//! network), beside the regression formulas they replace.
 //!
 //! - `ann_f32` / `ann_int`: the whole `FilmModel::film` call (logarithms, guard, network, exp).
 //! - `ann_f32_network` / `ann_int_network`: the network alone on prepared features.

@@ -1,6 +1,6 @@
 //! Host time of one step of the HIL kernel (`bearing_hil::kernel`, the code the firmware runs),
-//! stepping through a synthetic hub-motor whirl trace one sample per iteration. Issue 6's host
-//! goal for the bearing step is p99.9 ≤ 10 µs; criterion reports the mean and spread, the
+//! stepping through a synthetic hub-motor whirl trace one sample per iteration. The host's
+//! budget for the bearing step is p99.9 ≤ 10 µs; criterion reports the mean and spread, the
 //! percentiles come from `hil-sim replay`.
 
 use bearing_hil::kernel::{FilmKind, Kernel};

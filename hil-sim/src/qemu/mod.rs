@@ -28,7 +28,7 @@ pub struct QemuOptions {
     pub report_dir: PathBuf,
     /// QEMU is killed after this long.
     pub timeout: Duration,
-    /// Largest acceptable instruction count per step (issue 6: 30 000 ≈ 5 kHz at 168 MHz).
+    /// Largest acceptable instruction count per step (30 000 ≈ 5 kHz at 168 MHz).
     pub max_instructions: u32,
     /// Film model of the step (written to `film.txt` for the firmware).
     pub film: FilmKind,
@@ -89,7 +89,7 @@ pub fn parse_profile(text: &str) -> Vec<ProfileEntry> {
         .collect()
 }
 
-/// The report of an emulated replay (issue 6 §4 keys first).
+/// The report of an emulated replay (the documented keys first, docs/hil.md).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct QemuReport {
     /// Instructions per step (TIM2 at 1 GHz of virtual time, `-icount shift=0`).

@@ -1,6 +1,6 @@
 //! The replay report: the JSON the issue specifies, a markdown summary and the verdicts.
 //!
-//! JSON keys (issue 6 §4): `steps`, `step_time_ns{min,median,p99,p999,max}`, `budget_ok`,
+//! JSON keys scripts rely on: `steps`, `step_time_ns{min,median,p99,p999,max}`, `budget_ok`,
 //! `accuracy_ok`, `film_rel_err_p99`, `force_rel_err_p99`, `dry_force_rel_err_p99`,
 //! `network_fraction`, plus `steps_over_budget` and context (trace, film model, limits, pacing,
 //! the real-time scheduling of the timed loop, the machine's pauses (`environment`), reasons). Accuracy keys

@@ -69,7 +69,7 @@ pub struct Limits {
 }
 
 impl Default for Limits {
-    /// Issue 6: p99.9 step ≤ 10 µs on the host; film within 2 % and force within 1 % at the
+    /// The replay's limits: p99.9 step ≤ 10 µs on the host; film within 2 % and force within 1 % at the
     /// 99th percentile against the full numerical solver.
     fn default() -> Self {
         Self {

@@ -1,6 +1,6 @@
 //! The solver against the published film-thickness formulas, case by case.
 //!
-//! Issue 3 asks for two comparisons (docs/physics.md §5.1): with Barus viscosity and an
+//! Two comparisons are made (docs/physics.md §5.1): with Barus viscosity and an
 //! incompressible lubricant, h_c against Moes' formula (bound 5 %); with Roelands and
 //! Dowson–Higginson, h_c and h_min against Pan & Hamrock's (bound 10 %). A formula is a fit to
 //! numerical solutions, so a ratio outside the bound can be the formula's error or the solver's.
