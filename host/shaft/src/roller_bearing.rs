@@ -84,13 +84,14 @@ impl BearingModel for RollerBearing {
     }
 
     /// The core's `settle` at the state (no time passes): film table filled at its speed, warm
-    /// start converged from the last one in `SETTLE_STEPS` steps.
+    /// start converged from the last one in `SETTLE_STEPS` steps, committed at the state's time.
     fn settle(&mut self, state: &BearingState) -> Result<BearingReaction, BearingError> {
         let (os, _) = self.core_state(state);
         let out = self
             .bearing
             .settle(&os, SETTLE_STEPS)
             .map_err(|e| Self::refused(state, e))?;
+        self.commit_time = state.time;
         Ok(reaction(&out))
     }
 

@@ -81,7 +81,7 @@ impl Integrator {
                 w[2 * b + c] = v[d[c]];
             }
         }
-        me.evaluate_bearings(&u, &w, time)?;
+        me.settle_bearings(&u, &w, time)?;
         let mut rhs = constant_load + f0 - &damping * &v - &me.stiffness * &q;
         for (b, d) in me.bearing_dofs.iter().enumerate() {
             for c in 0..2 {

@@ -44,11 +44,35 @@ fn solve_small(a: &mut BearingMatrix, b: &mut [f64], n: usize) -> bool {
 }
 
 impl Integrator {
+    /// The bearings' reactions at the bearing displacements `u` and velocities `w` (per DOF)
+    /// at `time`: trial evaluations, which commit nothing.
     pub(super) fn evaluate_bearings(
         &mut self,
         u: &[f64],
         w: &[f64],
         time: f64,
+    ) -> Result<(), StepError> {
+        self.react_bearings(u, w, time, false)
+    }
+
+    /// As [`Integrator::evaluate_bearings`], but each bearing first converges its memory (warm
+    /// start, film table) at the state and commits it (`BearingModel::settle`): the start of a
+    /// run, so that the first steps' trials start from a converged warm start, not a cold one.
+    pub(super) fn settle_bearings(
+        &mut self,
+        u: &[f64],
+        w: &[f64],
+        time: f64,
+    ) -> Result<(), StepError> {
+        self.react_bearings(u, w, time, true)
+    }
+
+    fn react_bearings(
+        &mut self,
+        u: &[f64],
+        w: &[f64],
+        time: f64,
+        settle: bool,
     ) -> Result<(), StepError> {
         let clock = std::time::Instant::now();
         for (b, model) in self.bearings.iter_mut().enumerate() {
@@ -58,9 +82,12 @@ impl Integrator {
                 spin_speed: self.spin_speed,
                 time,
             };
-            self.reactions[b] = model
-                .evaluate(&state)
-                .map_err(|source| StepError::Bearing { time, source })?;
+            let reaction = if settle {
+                model.settle(&state)
+            } else {
+                model.evaluate(&state)
+            };
+            self.reactions[b] = reaction.map_err(|source| StepError::Bearing { time, source })?;
         }
         self.stats.bearing_evaluations += 1;
         self.totals.bearing_seconds += clock.elapsed().as_secs_f64();

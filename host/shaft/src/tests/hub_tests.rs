@@ -94,3 +94,42 @@ fn lubricated_hub_shaft_takes_one_bearing_evaluation_per_step() {
     );
     assert!(t.bearing_seconds > 0.0 && t.bearing_seconds <= t.step_seconds);
 }
+
+/// The start of a run at low speed, where the film is thinnest: the hub shaft at 1000 rpm from
+/// its static equilibrium, with the network's film and with the regression formulas, at the
+/// CLI's default step (20 per period of the 17-tooth mesh, 176 µs). The integrator settles the
+/// bearings' warm start at the initial state, so the first steps' trials start converged, and
+/// its Newton on the bearing forces converges at every step (`bearing shaft sweep` starts at
+/// this speed).
+#[test]
+fn lubricated_hub_shaft_runs_from_equilibrium_at_low_speed() {
+    use crate::integrator::{NewtonSettings, Scheme};
+    use crate::simulate::{run, RunSettings};
+
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/shaft_hub_motor.toml");
+    let model = load_model(&path).unwrap();
+    for film in [FilmKind::Int, FilmKind::Regression] {
+        let specs: Vec<_> = model
+            .description
+            .bearings
+            .iter()
+            .map(|b| b.spec.with_film(film))
+            .collect();
+        let omega = 1000.0 * std::f64::consts::PI / 30.0;
+        let settings = RunSettings {
+            spin_speed: omega,
+            spin_speed_end: None,
+            dt: 2.0 * std::f64::consts::PI / (20.0 * 17.0 * omega),
+            settle_time: 0.01,
+            record_time: 0.01,
+            record_every: 1,
+            scheme: Scheme::AverageAcceleration,
+            reduction_modes: None,
+            newton: NewtonSettings::default(),
+        };
+        let r = run(&model, &settings, Some(&specs)).unwrap_or_else(|e| panic!("{film:?}: {e}"));
+        let per_step = r.totals.evaluations_per_step();
+        eprintln!("{film:?}: {per_step:.3} bearing evaluations per step");
+        assert!(per_step < 3.0, "{film:?}: {per_step} evaluations per step");
+    }
+}
