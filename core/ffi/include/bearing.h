@@ -308,7 +308,8 @@ BearingStatus bearing_preset(uint32_t preset, struct BearingConfig *out);
 
 // Builds the bearing of `*config` in `storage` (`storage_len` bytes, aligned to
 // `bearing_storage_align()`) and sets `*handle_out` to it. A refused configuration field is
-// described in `*refusal` when `refusal` is not NULL (its `field` is empty otherwise).
+// described in `*refusal` unless `refusal` is NULL (its `field` is empty when no field was
+// refused).
 //
 // # Safety
 // `storage` is NULL or valid for writes of `storage_len` bytes, owned by the caller until

@@ -136,7 +136,8 @@ pub unsafe extern "C" fn bearing_preset(preset: u32, out: *mut BearingConfig) ->
 
 /// Builds the bearing of `*config` in `storage` (`storage_len` bytes, aligned to
 /// `bearing_storage_align()`) and sets `*handle_out` to it. A refused configuration field is
-/// described in `*refusal` when `refusal` is not NULL (its `field` is empty otherwise).
+/// described in `*refusal` unless `refusal` is NULL (its `field` is empty when no field was
+/// refused).
 ///
 /// # Safety
 /// `storage` is NULL or valid for writes of `storage_len` bytes, owned by the caller until
@@ -150,20 +151,27 @@ pub unsafe extern "C" fn bearing_init(
     handle_out: *mut *mut BearingHandle,
     refusal: *mut BearingRefusal,
 ) -> BearingStatus {
-    let refusal_ok = check_pointer(refusal).is_ok();
-    if refusal_ok {
-        // SAFETY: non-NULL and aligned (checked), writable by the caller's contract.
-        unsafe { refusal.write(NO_REFUSAL) };
-    }
     let storage = storage.cast::<Slot>();
+    // A NULL `refusal` asks for no description; a misaligned one is refused like the others.
+    let refusal_check = if refusal.is_null() {
+        Ok(())
+    } else {
+        check_pointer(refusal.cast_const())
+    };
     for check in [
         check_pointer(storage.cast_const()),
         check_pointer(config),
         check_pointer(handle_out.cast_const()),
+        refusal_check,
     ] {
         if let Err(e) = check {
             return e.into();
         }
+    }
+    let refusal_ok = !refusal.is_null();
+    if refusal_ok {
+        // SAFETY: non-NULL and aligned (checked), writable by the caller's contract.
+        unsafe { refusal.write(NO_REFUSAL) };
     }
     if storage_len < size_of::<Slot>() {
         return BearingStatus::StorageTooSmall;
