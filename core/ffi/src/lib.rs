@@ -265,12 +265,7 @@ fn refused(slot: &mut Slot, error: ParamError, status: BearingStatus) -> Bearing
 unsafe fn write_output(slot: &Slot, out: *mut BearingOutput) {
     let bearing = slot.model.bearing();
     // SAFETY: the caller's contract.
-    unsafe {
-        out.write(BearingOutput::of(
-            &bearing.output(),
-            bearing.cage_angle_rad(),
-        ))
-    }
+    unsafe { BearingOutput::write(&bearing.output(), bearing.cage_angle_rad(), out) }
 }
 
 /// Which computing call a step function makes.

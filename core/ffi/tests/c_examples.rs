@@ -203,14 +203,8 @@ fn build_m4_staticlib() -> PathBuf {
     run(
         Command::new(cargo)
             .current_dir(workspace())
-            .args([
-                "build",
-                "--release",
-                "-p",
-                "bearing-ffi",
-                "--target",
-                TARGET,
-            ])
+            .args(["rustc", "--release", "-p", "bearing-ffi", "--lib"])
+            .args(["--target", TARGET, "--crate-type", "staticlib"])
             .args(["--features", "prove-no-panic", "--target-dir"])
             .arg(&target_dir)
             .env("CARGO_PROFILE_RELEASE_LTO", "fat")
