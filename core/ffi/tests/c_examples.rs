@@ -326,3 +326,55 @@ fn m4_c_example_replays_the_hub_trace_bit_identically_under_qemu() {
     );
     assert_eq!(fewest, most, "the step's instruction count varies");
 }
+
+/// The minimal program of docs/c-api.md (which must show core/ffi/examples/minimal.c as it is)
+/// builds, runs, and prints the force, stiffness and cage angle the core computes in Rust.
+#[test]
+fn minimal_program_of_the_docs_prints_the_cores_numbers() {
+    use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
+
+    let source = std::fs::read_to_string(ffi_dir().join("examples/minimal.c")).unwrap();
+    let docs = std::fs::read_to_string(workspace().join("docs/c-api.md")).unwrap();
+    assert!(
+        docs.contains(&source),
+        "docs/c-api.md does not show core/ffi/examples/minimal.c as it is"
+    );
+    let dir = scratch("ffi-minimal");
+    let exe = dir.join("minimal");
+    run(
+        Command::new(std::env::var("CC").unwrap_or_else(|_| "cc".into()))
+            .args(["-std=c11", "-O2", "-Wall", "-Wextra", "-Werror", "-I"])
+            .arg(ffi_dir().join("include"))
+            .arg(ffi_dir().join("examples/minimal.c"))
+            .arg(host_staticlib())
+            .args(["-lpthread", "-ldl", "-lm", "-o"])
+            .arg(&exe),
+        "install a C compiler: apt-get install gcc",
+    );
+    let printed = String::from_utf8(run(&mut Command::new(&exe), "just built").stdout).unwrap();
+    let numbers: Vec<f32> = printed
+        .split_whitespace()
+        .filter_map(|word| word.parse().ok())
+        .collect();
+
+    let mut bearing =
+        Bearing::<17, 10>::new(BearingDesign::HUB_MOTOR.params().unwrap(), FilmKind::Int).unwrap();
+    let state = OperatingState::new([0.0, -5.0e-6], [0.0; 2], [0.0; 2], 2000.0).unwrap();
+    bearing.settle(&state, 6).unwrap();
+    for _ in 0..10 {
+        bearing.advance(&state, 1.0e-4).unwrap();
+    }
+    let out = bearing.output();
+    let expected = [
+        out.force_n[0],
+        out.force_n[1],
+        out.stiffness[1][1],
+        bearing.cage_angle_rad(),
+    ];
+    // Nine significant digits identify an f32 exactly.
+    assert_eq!(
+        numbers.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        expected.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        "printed: {printed}"
+    );
+}

@@ -75,9 +75,10 @@ int main(void) {
   fclose(trace);
   if (fclose(outputs) != 0 && code == 0) code = 4;
   if (code == 0) {
-    printf("%u steps of %u rollers, %u..%u instructions per step (calibration %u), storage %u B\n",
+    printf("%u steps of %u rollers, %u..%u instructions per step (calibration %u), storage %u B aligned to %u\n",
            (unsigned)summary.steps, (unsigned)summary.rollers, (unsigned)summary.fewest_counts,
-           (unsigned)summary.most_counts, (unsigned)calibration, (unsigned)bearing_storage_size());
+           (unsigned)summary.most_counts, (unsigned)calibration, (unsigned)bearing_storage_size(),
+           (unsigned)bearing_storage_align());
   }
   return code;
 }
