@@ -33,7 +33,7 @@
 // Capacity of the field names of a `BearingRefusal`, NUL included.
 #define BEARING_FIELD_NAME_LEN 48
 
-// What a function returns: `BEARING_OK` or why it refused (docs/c-api.md, error codes).
+// What a function returns: `BEARING_STATUS_OK` or why it refused (docs/c-api.md, status codes).
 enum BearingStatus
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
   : uint32_t

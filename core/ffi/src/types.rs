@@ -10,7 +10,7 @@ use bearing_core::{ContactLaw, FilmKind, OutputView, RollerOutput};
 use core::ffi::c_char;
 use core::ptr::addr_of_mut;
 
-/// What a function returns: `BEARING_OK` or why it refused (docs/c-api.md, error codes).
+/// What a function returns: `BEARING_STATUS_OK` or why it refused (docs/c-api.md, status codes).
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BearingStatus {

@@ -26,15 +26,26 @@ int main(int argc, char **argv) {
     fprintf(stderr, "cannot open %s\n", argv[1]);
     return 2;
   }
-  FILE *outputs = fopen(argv[2], "wb");
+  /* Written whole or not at all: into OUTPUTS.part, renamed to OUTPUTS when complete. */
+  char part[4096];
+  if (snprintf(part, sizeof part, "%s.part", argv[2]) >= (int)sizeof part) {
+    fprintf(stderr, "output path too long: %s\n", argv[2]);
+    return 1;
+  }
+  FILE *outputs = fopen(part, "wb");
   if (outputs == NULL) {
-    fprintf(stderr, "cannot create %s\n", argv[2]);
+    fprintf(stderr, "cannot create %s\n", part);
     return 4;
   }
   ReplaySummary summary;
   int code = replay(trace, outputs, max_steps, BEARING_FILM_INT, NULL, 0, &summary);
   fclose(trace);
   if (fclose(outputs) != 0 && code == 0) code = 4;
+  if (code == 0 && rename(part, argv[2]) != 0) {
+    fprintf(stderr, "cannot rename %s to %s\n", part, argv[2]);
+    code = 4;
+  }
+  if (code != 0) remove(part);
   if (code == 0) {
     printf("%u steps of %u rollers; storage %zu of %d bytes, alignment %zu\n", (unsigned)summary.steps,
            (unsigned)summary.rollers, bearing_storage_size(), BEARING_STORAGE_SIZE, bearing_storage_align());

@@ -1,7 +1,7 @@
 /*
  * Cortex-M4F example of the bearing C library (STM32F405, run on QEMU's netduinoplus2 with
  * semihosting): replays `trace.bin` from the host's working directory and writes
- * `outputs.bin`, counting the instructions of every bearing_advance with TIM2.
+ * `outputs.bin` (whole or not at all), counting the instructions of every bearing_advance with TIM2.
  *
  * QEMU does not model the DWT cycle counter; with `-icount shift=0` every instruction advances
  * virtual time by 1 ns, and TIM2, clocked from virtual time at 1 GHz, counts instructions
@@ -74,6 +74,9 @@ int main(void) {
   int code = replay(trace, outputs, REPLAY_MAX_STEPS, BEARING_FILM_INT, tim2_now, calibration, &summary);
   fclose(trace);
   if (fclose(outputs) != 0 && code == 0) code = 4;
+  /* Whole or not at all: newlib's semihosting layer has no rename(), so a failed replay removes
+     the file; a complete one ends with the trailer, which an interrupted one lacks. */
+  if (code != 0) remove("outputs.bin");
   if (code == 0) {
     printf("%u steps of %u rollers, %u..%u instructions per step (calibration %u), storage %u B aligned to %u\n",
            (unsigned)summary.steps, (unsigned)summary.rollers, (unsigned)summary.fewest_counts,
