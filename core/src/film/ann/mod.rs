@@ -23,11 +23,18 @@
 mod exact_f64;
 #[cfg(target_arch = "x86_64")]
 mod exact_lut;
+// The layers, the integer arithmetic and the generated weights are public for the host's
+// quantisation, code generation and their tests (`bearing-train`, `tests/`), not for
+// integrators: hidden from the documentation. An integrator uses `AnnInt` / `AnnF32` through
+// `FilmModel`, or `FilmKind` when building a bearing.
+#[doc(hidden)]
 #[path = "f32.rs"]
 pub mod float;
+#[doc(hidden)]
 pub mod int;
 mod regression;
 
+#[doc(hidden)]
 #[rustfmt::skip]
 #[allow(clippy::excessive_precision, clippy::unreadable_literal)]
 pub mod model_weights;
@@ -67,6 +74,7 @@ pub struct DomainLimits {
     pub elastic_max_log_ratio: f32,
 }
 
+#[doc(hidden)]
 /// What the guard and the feature stage hand to the network and to the output stage.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Prepared {
@@ -102,6 +110,7 @@ fn in_positive_range(v: f32, lo: f32, hi: f32) -> bool {
     v.to_bits().wrapping_sub(lo.to_bits()) <= hi.to_bits().wrapping_sub(lo.to_bits())
 }
 
+#[doc(hidden)]
 /// Steps 1–3 of the module doc.
 pub fn prepare(c: &ContactInput) -> Prepared {
     let raw = [
@@ -161,6 +170,7 @@ pub fn prepare(c: &ContactInput) -> Prepared {
     }
 }
 
+#[doc(hidden)]
 /// Step 5: the film from the normalised network output `y` (either path) or the fallback.
 /// Both are always computed: the work must not depend on the guard.
 pub fn finish(p: &Prepared, y: [f32; 2], source: FilmSource) -> Film {
@@ -216,6 +226,7 @@ fn finish_with_fallback(p: &Prepared, y: [f32; 2], fallback: [f32; 2], source: F
     }
 }
 
+#[doc(hidden)]
 /// The loads at which the network serves contacts like `c` (its load ignored): every test of
 /// the guard in [`prepare`] is a bound on ln Q once the other inputs are fixed — the load box,
 /// the Hertz window (2 ln p_h rises with ln Q) and the three regime inequalities (each linear in
