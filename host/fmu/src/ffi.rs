@@ -524,3 +524,6 @@ pub unsafe extern "C" fn fmi2GetBooleanStatus(
         Ok(())
     })
 }
+
+#[cfg(test)]
+mod tests;

@@ -334,6 +334,35 @@ mod tests {
     }
 
     #[test]
+    fn a_tuned_viscosity_rebuilds_the_bearing_at_the_cage_angle_reached() {
+        let mut fmu = Instance::new(&BearingDesign::NU205, FilmKind::Regression);
+        fmu.set_real(1, -4.0e-6).unwrap();
+        fmu.set_real(6, 900.0).unwrap();
+        fmu.enter_initialization().unwrap();
+        fmu.exit_initialization().unwrap();
+        fmu.do_step(0.0, 1.0e-3).unwrap();
+        let angle = fmu.real(FIRST_PARAMETER as u32 - 1).unwrap() as f32;
+        let viscosity = FIRST_PARAMETER as u32 + 7;
+        fmu.set_real(viscosity, 0.02).unwrap();
+        fmu.do_step(1.0e-3, 1.0e-3).unwrap();
+
+        let design = BearingDesign {
+            viscosity_pa_s: 0.02,
+            ..BearingDesign::NU205
+        };
+        let mut bearing = boxed(design.params().unwrap(), FilmKind::Regression).unwrap();
+        bearing.set_cage_angle(angle).unwrap();
+        let state = OperatingState::new([0.0, -4.0e-6], [0.0; 2], [0.0; 2], 900.0).unwrap();
+        bearing.settle(&state, SETTLE_STEPS).unwrap();
+        bearing.advance(&state, 1.0e-3).unwrap();
+        let expected = output_values(&bearing.output(), bearing.cage_angle_rad());
+        let got: Vec<f64> = (FIRST_OUTPUT..FIRST_PARAMETER)
+            .map(|vr| fmu.real(vr as u32).unwrap())
+            .collect();
+        assert_eq!(got, expected.to_vec());
+    }
+
+    #[test]
     fn refusals_name_the_field_and_commit_nothing() {
         let mut fmu = Instance::new(&BearingDesign::HUB_MOTOR, FilmKind::Int);
         assert!(fmu.do_step(0.0, 1e-4).unwrap_err().contains("phase"));
