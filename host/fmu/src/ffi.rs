@@ -436,9 +436,6 @@ macro_rules! unsupported {
     };
 }
 
-unsupported!(fmi2GetFMUstate, "canGetAndSetFMUstate is false", (s: *mut fmi2FMUstate));
-unsupported!(fmi2SetFMUstate, "canGetAndSetFMUstate is false", (s: fmi2FMUstate));
-unsupported!(fmi2FreeFMUstate, "canGetAndSetFMUstate is false", (s: *mut fmi2FMUstate));
 unsupported!(fmi2SerializedFMUstateSize, "canSerializeFMUstate is false",
     (s: fmi2FMUstate, size: *mut usize));
 unsupported!(fmi2SerializeFMUstate, "canSerializeFMUstate is false",
@@ -463,6 +460,68 @@ unsupported!(fmi2GetIntegerStatus, "no Integer status is defined",
     (s: fmi2StatusKind, value: *mut fmi2Integer));
 unsupported!(fmi2GetStringStatus, "fmi2DoStep always completes before it returns",
     (s: fmi2StatusKind, value: *mut fmi2String));
+
+/// `fmi2GetFMUstate`: a copy of the instance's state, into `*state` when it holds one from an
+/// earlier call, else newly allocated.
+///
+/// # Safety
+/// FMI 2.0 contract on `c`; `state` NULL or pointing to NULL or to a state of this library.
+#[no_mangle]
+pub unsafe extern "C" fn fmi2GetFMUstate(c: fmi2Component, state: *mut fmi2FMUstate) -> fmi2Status {
+    with_component(c, "fmi2GetFMUstate", |comp| {
+        // SAFETY: the caller's contract on `state`.
+        let [slot] = (unsafe { slice_mut(state, 1, "FMUstate") })? else {
+            return Err("FMUstate is NULL".into());
+        };
+        let snapshot = comp.instance.snapshot();
+        if slot.is_null() {
+            *slot = Box::into_raw(Box::new(snapshot)).cast();
+        } else {
+            // SAFETY: a non-NULL state is one this function allocated and has not freed.
+            unsafe { *slot.cast::<Instance>() = snapshot };
+        }
+        Ok(())
+    })
+}
+
+/// `fmi2SetFMUstate`: the instance's state becomes a copy of `state`.
+///
+/// # Safety
+/// FMI 2.0 contract on `c`; `state` NULL or a state of this library not yet freed.
+#[no_mangle]
+pub unsafe extern "C" fn fmi2SetFMUstate(c: fmi2Component, state: fmi2FMUstate) -> fmi2Status {
+    with_component(c, "fmi2SetFMUstate", |comp| {
+        if state.is_null() {
+            return Err("FMUstate is NULL".into());
+        }
+        // SAFETY: a non-NULL state is one `fmi2GetFMUstate` allocated and has not freed.
+        comp.instance = unsafe { &*state.cast::<Instance>() }.snapshot();
+        Ok(())
+    })
+}
+
+/// `fmi2FreeFMUstate`: free `*state` (nothing when NULL) and set it to NULL.
+///
+/// # Safety
+/// FMI 2.0 contract on `c`; `state` NULL or pointing to NULL or to a state of this library.
+#[no_mangle]
+pub unsafe extern "C" fn fmi2FreeFMUstate(
+    c: fmi2Component,
+    state: *mut fmi2FMUstate,
+) -> fmi2Status {
+    with_component(c, "fmi2FreeFMUstate", |_| {
+        // SAFETY: the caller's contract on `state`.
+        let [slot] = (unsafe { slice_mut(state, 1, "FMUstate") })? else {
+            return Err("FMUstate is NULL".into());
+        };
+        if !slot.is_null() {
+            // SAFETY: allocated by `Box::into_raw` in `fmi2GetFMUstate`, freed once.
+            drop(unsafe { Box::from_raw(slot.cast::<Instance>()) });
+            *slot = std::ptr::null_mut();
+        }
+        Ok(())
+    })
+}
 
 /// # Safety
 /// FMI 2.0 contract on `c`.

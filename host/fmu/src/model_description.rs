@@ -49,7 +49,7 @@ pub fn model_description(
         "  <CoSimulation modelIdentifier=\"{MODEL_IDENTIFIER}\" \
          canHandleVariableCommunicationStepSize=\"true\" \
          canBeInstantiatedOnlyOncePerProcess=\"false\" canNotUseMemoryManagementFunctions=\"true\" \
-         canGetAndSetFMUstate=\"false\" canSerializeFMUstate=\"false\" \
+         canGetAndSetFMUstate=\"true\" canSerializeFMUstate=\"false\" \
          providesDirectionalDerivative=\"false\"/>\n"
     ));
     w("  <UnitDefinitions>\n".into());

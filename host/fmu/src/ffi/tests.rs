@@ -1,5 +1,6 @@
 //! The FMI boundary under hostile arguments: thousands of random calls (NULL pointers, counts
-//! that cannot be, unknown value references, non-finite numbers, calls out of phase) return
+//! that cannot be, unknown value references, non-finite numbers, calls out of phase, FMU states
+//! NULL, saved, restored and freed) return
 //! fmi2OK or fmi2Error, never fmi2Fatal (a caught panic) and never a crash.
 
 use super::*;
@@ -135,6 +136,7 @@ fn random_calls_return_ok_or_error_never_fatal() {
         let mut refs = [0 as fmi2ValueReference; 8];
         let mut reals = [0.0; 8];
         let mut integers = [0 as fmi2Integer; 8];
+        let mut state: fmi2FMUstate = null_mut();
         for _ in 0..20_000 {
             let n = rng.below(9) as usize;
             for r in refs.iter_mut() {
@@ -153,7 +155,12 @@ fn random_calls_return_ok_or_error_never_fatal() {
                 _ => (n, refs.as_ptr()),
             };
             let component = if rng.below(50) == 0 { null_mut() } else { c };
-            let status = match rng.below(14) {
+            let state_slot = if rng.below(4) == 0 {
+                null_mut()
+            } else {
+                &mut state as *mut fmi2FMUstate
+            };
+            let status = match rng.below(15) {
                 0..=3 => fmi2SetReal(component, refs_ptr, count, reals.as_ptr()),
                 4 => fmi2GetReal(component, refs_ptr, count, reals.as_mut_ptr()),
                 5 => fmi2SetInteger(component, refs_ptr, count, integers.as_ptr()),
@@ -175,6 +182,11 @@ fn random_calls_return_ok_or_error_never_fatal() {
                     };
                     fmi2GetRealStatus(component, rng.below(5) as fmi2StatusKind, out)
                 }
+                13 => match rng.below(3) {
+                    0 => fmi2GetFMUstate(component, state_slot),
+                    1 => fmi2SetFMUstate(component, state),
+                    _ => fmi2FreeFMUstate(component, state_slot),
+                },
                 _ => {
                     let names = [c"logAll".as_ptr(), c"nonsense".as_ptr(), null()];
                     let k = rng.below(4) as usize;
@@ -194,6 +206,7 @@ fn random_calls_return_ok_or_error_never_fatal() {
                 steps += 1;
             }
         }
+        assert_eq!(fmi2FreeFMUstate(c, &mut state), OK);
         fmi2FreeInstance(c);
     }
     assert!(steps > 50, "{steps} well-formed starts");
