@@ -34,6 +34,8 @@ enum Command {
     Export(cli::export::ExportArgs),
     /// Full numerical EHL line-contact solver.
     Ehl(cli::ehl::EhlArgs),
+    /// FMI 2.0 co-simulation FMU of a bearing file: export.
+    Fmu(cli::fmu::FmuArgs),
 }
 
 fn main() -> std::process::ExitCode {
@@ -50,6 +52,7 @@ fn main() -> std::process::ExitCode {
         Command::Train(args) => cli::train::run(*args),
         Command::Export(args) => cli::export::run(args),
         Command::Ehl(args) => cli::ehl::run(args),
+        Command::Fmu(args) => cli::fmu::run(args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

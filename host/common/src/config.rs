@@ -172,9 +172,9 @@ impl BearingConfig {
         Ok((config, params))
     }
 
-    /// The core parameters: the file's fields as the core's [`BearingDesign`], validated by
-    /// it (the first refused field is named).
-    pub fn params(&self) -> Result<BearingParams, ParamError> {
+    /// The file's fields as the core's [`BearingDesign`] (the contact law's name checked; the
+    /// values are checked by [`BearingDesign::params`]).
+    pub fn design(&self) -> Result<BearingDesign, ParamError> {
         let g = &self.geometry;
         let l = &self.lubricant;
         let contact_law = match self.model.contact_law.as_str() {
@@ -188,7 +188,7 @@ impl BearingConfig {
                 })
             }
         };
-        let params = BearingDesign {
+        Ok(BearingDesign {
             pitch_diameter_m: g.pitch_diameter_m,
             roller_diameter_m: g.roller_diameter_m,
             roller_length_m: g.roller_length_m,
@@ -202,8 +202,13 @@ impl BearingConfig {
             density_kg_m3: l.density_kg_m3,
             contact_law,
             damping_factor_s: self.model.damping_factor_s,
-        }
-        .params()?;
+        })
+    }
+
+    /// The core parameters: the file's fields as the core's [`BearingDesign`], validated by
+    /// it (the first refused field is named).
+    pub fn params(&self) -> Result<BearingParams, ParamError> {
+        let params = self.design()?.params()?;
         if let Some(v) = self.case.radial_load_n {
             if !(v.is_finite() && v >= 0.0) {
                 return Err(ParamError {

@@ -8,6 +8,7 @@ pub mod ehl_plot;
 pub mod export;
 pub mod film;
 mod film_plot;
+pub mod fmu;
 pub mod shaft;
 pub mod statics;
 pub mod train;
