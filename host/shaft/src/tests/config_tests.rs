@@ -141,8 +141,11 @@ fn absurd_finite_values_are_refused_with_location() {
         ),
     ] {
         let e = error_of(&GOOD.replace(good, bad));
+        let value = bad.split(" = ").nth(1).unwrap();
         assert!(
-            e.starts_with(&format!("x/shaft.toml:{line}: {field}:")),
+            e.starts_with(&format!(
+                "x/shaft.toml:{line}: {field}: {value} is not allowed"
+            )),
             "{e}"
         );
         assert!(e.contains(max), "{e}");
