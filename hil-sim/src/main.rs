@@ -2,11 +2,11 @@
 //!
 //! Every subcommand lives in its own module under `cli/`; this file only dispatches.
 
-use clap::{Parser, Subcommand};
+use clap::Subcommand;
 
 mod cli;
 
-#[derive(Parser)]
+#[derive(clap::Parser)]
 #[command(
     name = "hil-sim",
     version,
@@ -29,11 +29,12 @@ enum Command {
 }
 
 fn main() -> std::process::ExitCode {
+    bearing_host_common::closed_pipe::end_quietly_when_the_reader_leaves();
     if let Err(e) = bearing_host_common::cpu::check() {
         eprintln!("error: {e}");
         return std::process::ExitCode::from(1);
     }
-    let cli = Cli::parse();
+    let cli: Cli = bearing_host_common::args::parse();
     let result: anyhow::Result<std::process::ExitCode> = match cli.command {
         Command::Trace(command) => {
             cli::trace_cmd::run(command).map(|()| std::process::ExitCode::SUCCESS)

@@ -155,3 +155,88 @@ fn out_of_range_flags_are_named() {
     assert_eq!(out.status.code(), Some(1));
     assert!(stderr(&out).contains("--timeout-s"));
 }
+
+/// When one plot of the report cannot be written (its name is taken by a directory), the
+/// report is not written either: no report.json that could read `budget_ok: true` alone.
+#[test]
+fn replay_writes_the_report_and_its_plots_or_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("t.csv");
+    let trace = trace.to_str().unwrap();
+    assert!(hil_sim(&["trace", "synth", trace, "--count", "200"])
+        .status
+        .success());
+    let report = dir.path().join("report");
+    std::fs::create_dir_all(report.join("step_time_histogram.png")).unwrap();
+    let out = hil_sim(&[
+        "replay",
+        "--trace",
+        trace,
+        "--reference-every",
+        "0",
+        "--pause-probe-s",
+        "0",
+        "--realtime",
+        "off",
+        "--report",
+        report.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("step_time_histogram.png"),
+        "{}",
+        stderr(&out)
+    );
+    let left: Vec<_> = std::fs::read_dir(&report)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["step_time_histogram.png"]);
+}
+
+/// A subnormal sample rate (its period 1/rate is infinite) is refused by `trace validate`
+/// and by `replay`, which must not panic converting that period to a `Duration`.
+#[test]
+fn a_subnormal_sample_rate_is_refused_by_validate_and_replay() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("sub.csv");
+    std::fs::write(
+        &path,
+        "# bearing: hub_motor\n# lubricant: thesis_oil\n# sample_rate_hz: 4e-320\ntime_s,speed_rad_s,x_m,y_m,vx_m_s,vy_m_s\n0,100,0,0,0,0\n1,100,0,0,0,0\n",
+    )
+    .unwrap();
+    let path = path.to_str().unwrap();
+    for args in [
+        &["trace", "validate", path][..],
+        &["replay", "--trace", path, "--reference-every", "0"][..],
+    ] {
+        let out = hil_sim(args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let err = stderr(&out);
+        assert!(
+            err.contains("line 3") && err.contains("sample_rate_hz"),
+            "{err}"
+        );
+        assert!(!err.contains("panicked"), "{err}");
+    }
+}
+
+/// The reader of stdout goes away before `trace info` prints: a quiet end, no panic.
+#[test]
+fn a_closed_pipe_ends_trace_info_without_a_panic() {
+    let dir = tempfile::tempdir().unwrap();
+    let bin = dir.path().join("a.bin");
+    assert!(hil_sim(&["trace", "synth", bin.to_str().unwrap()])
+        .status
+        .success());
+    let mut child = Command::new(env!("CARGO_BIN_EXE_hil-sim"))
+        .args(["trace", "info", bin.to_str().unwrap()])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let err = stderr(&out);
+    assert!(err.is_empty(), "{err}");
+}

@@ -10,6 +10,7 @@ use bearing_hil::replay::stats::Limits;
 use bearing_hil::replay::{film_arg, plots, replay, FilmKind, ReplayConfig};
 use bearing_hil::trace::{Trace, ValidationOptions};
 use bearing_hil::wiring;
+use bearing_host_common::output::OutputFiles;
 use clap::Args;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -171,10 +172,17 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
     bar.finish_and_clear();
     let report = ReplayReport::build(&trace.meta, args.film, stepper_name, &config, &run)
         .ok_or_else(|| anyhow!("the trace has no samples"))?;
+    // The report and its plots together or not at all: a report.json reading `budget_ok` must
+    // not stand without the plots it describes.
+    let mut files = OutputFiles::new();
     report
-        .write(&args.report)
+        .write(&mut files, &args.report)
         .with_context(|| format!("writing the report into {}", args.report.display()))?;
-    plots::write_all(&args.report, &trace, &run, budget_us).map_err(|e| anyhow!(e))?;
+    plots::write_all(&mut files, &args.report, &trace, &run, budget_us)
+        .map_err(|e| anyhow!("writing the report into {}: {e}", args.report.display()))?;
+    files
+        .commit()
+        .with_context(|| format!("writing the report into {}", args.report.display()))?;
     if args.json {
         println!("{}", serde_json::to_string_pretty(&report)?);
     } else {

@@ -179,8 +179,8 @@ pub struct ReplayRun {
 pub struct ReplayError {
     /// Sample index.
     pub index: usize,
-    /// What failed: `"stepper"`, `"warm-up stepper"`, `"reference"`, `"dry stepper"` or
-    /// `"real-time scheduling"`.
+    /// What failed: `"configuration"`, `"stepper"`, `"warm-up stepper"`, `"reference"`,
+    /// `"dry stepper"` or `"real-time scheduling"`.
     pub stage: &'static str,
     /// Its reason.
     pub fault: StepFault,
@@ -231,6 +231,23 @@ pub fn replay(
     config: &ReplayConfig,
     progress: Option<&indicatif::ProgressBar>,
 ) -> Result<ReplayRun, ReplayError> {
+    // The release times index/rate become `Duration`s, which panic on an infinite or negative
+    // number of seconds: refuse a rate outside the traces' own range first.
+    let rates = crate::trace::MIN_SAMPLE_RATE_HZ..=crate::trace::MAX_SAMPLE_RATE_HZ;
+    if !rates.contains(&config.rate_hz) {
+        return Err(ReplayError {
+            index: 0,
+            stage: "configuration",
+            fault: StepFault {
+                reason: format!(
+                    "step rate {:e} Hz is out of range: allowed {:e} ..= {:e} Hz",
+                    config.rate_hz,
+                    rates.start(),
+                    rates.end()
+                ),
+            },
+        });
+    }
     let n = trace.samples.len();
     let mut step_times_ns = vec![0u64; n];
     let mut outputs = vec![StepOutputs::default(); n];

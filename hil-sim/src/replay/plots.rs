@@ -5,6 +5,7 @@
 use super::engine::ReplayRun;
 use super::stats::percentile_sorted;
 use crate::trace::Trace;
+use bearing_host_common::output::OutputFiles;
 use bearing_host_common::plot_style::draw_legend;
 use plotters::prelude::*;
 use std::path::Path;
@@ -16,40 +17,32 @@ type Series = (&'static str, RGBColor, Vec<(f64, f64)>);
 
 const SIZE: (u32, u32) = (1000, 600);
 
-/// Writes every plot that has data into `dir`; returns the file names written.
+/// Draws every plot that has data into `files`, staged for `dir` (they appear there when
+/// `files` is committed); returns the file names.
 pub fn write_all(
+    files: &mut OutputFiles,
     dir: &Path,
     trace: &Trace,
     run: &ReplayRun,
     budget_us: f64,
 ) -> Result<Vec<String>, String> {
     let mut written = Vec::new();
-    let mut attempt = |name: &str, result: PlotResult| match result {
-        Ok(()) => {
-            written.push(name.to_string());
-            Ok(())
-        }
-        Err(e) => Err(format!("plot {name}: {e}")),
+    let mut attempt = |name: &str, draw: &dyn Fn(&Path) -> PlotResult| {
+        let temp = files
+            .stage(&dir.join(name))
+            .map_err(|e| format!("plot {name}: {e}"))?;
+        draw(&temp).map_err(|e| format!("plot {name}: {e}"))?;
+        written.push(name.to_string());
+        Ok::<(), String>(())
     };
-    attempt(
-        "step_time_histogram.png",
-        step_time_histogram(
-            &dir.join("step_time_histogram.png"),
-            &run.step_times_ns,
-            budget_us,
-        ),
-    )?;
+    attempt("step_time_histogram.png", &|p| {
+        step_time_histogram(p, &run.step_times_ns, budget_us)
+    })?;
     if !run.points.is_empty() {
-        attempt(
-            "error_along_trace.png",
-            error_along_trace(&dir.join("error_along_trace.png"), run),
-        )?;
+        attempt("error_along_trace.png", &|p| error_along_trace(p, run))?;
     }
     if run.outputs.first().is_some_and(|o| o.rollers > 0) {
-        attempt(
-            "film_per_roller.png",
-            film_per_roller(&dir.join("film_per_roller.png"), trace, run),
-        )?;
+        attempt("film_per_roller.png", &|p| film_per_roller(p, trace, run))?;
     }
     Ok(written)
 }

@@ -14,6 +14,7 @@ use super::stats::{accuracy_verdict, budget_verdict, percentile, Limits, StepTim
 use super::FilmKind;
 use crate::realtime::Realtime;
 use crate::trace::TraceMeta;
+use bearing_host_common::output::OutputFiles;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -328,13 +329,14 @@ impl ReplayReport {
         md
     }
 
-    /// Writes `report.json` and `report.md` into `dir`.
-    pub fn write(&self, dir: &Path) -> std::io::Result<()> {
+    /// Writes `report.json` and `report.md` into `files`, staged for `dir` (created if
+    /// missing); they appear there when `files` is committed.
+    pub fn write(&self, files: &mut OutputFiles, dir: &Path) -> std::io::Result<()> {
         std::fs::create_dir_all(dir)?;
         let json = serde_json::to_string_pretty(self).map_err(std::io::Error::other)?;
-        std::fs::write(dir.join("report.json"), json)?;
+        std::fs::write(files.stage(&dir.join("report.json"))?, json)?;
         let mut md = self.markdown();
         md.push_str("\n![step time](step_time_histogram.png)\n\n![error along the trace](error_along_trace.png)\n\n![film per roller](film_per_roller.png)\n");
-        std::fs::write(dir.join("report.md"), md)
+        std::fs::write(files.stage(&dir.join("report.md"))?, md)
     }
 }

@@ -13,6 +13,7 @@ use super::stats::{budget_verdict, percentile, Limits, StepTimeStats};
 use super::*;
 use crate::trace::synthetic::Whirl;
 use crate::trace::{Trace, TraceMeta};
+use bearing_host_common::output::OutputFiles;
 
 const Z: usize = 17;
 /// Load constant K (N/m^(10/9)), of the order of docs/physics.md §3's Palmgren law for l = 15 mm.
@@ -278,10 +279,15 @@ fn exact_reference_passes_and_the_dry_model_is_worse() {
     let dir = tempfile::tempdir().unwrap();
     if let Ok(keep) = std::env::var("HIL_TEST_KEEP_PLOTS") {
         std::fs::create_dir_all(&keep).unwrap();
-        plots::write_all(std::path::Path::new(&keep), &trace, &run, 10.0).unwrap();
+        let mut files = OutputFiles::new();
+        plots::write_all(&mut files, std::path::Path::new(&keep), &trace, &run, 10.0).unwrap();
+        files.commit().unwrap();
     }
-    report.write(dir.path()).unwrap();
-    let written = plots::write_all(dir.path(), &trace, &run, cfg.limits.budget_us).unwrap();
+    let mut files = OutputFiles::new();
+    report.write(&mut files, dir.path()).unwrap();
+    let written =
+        plots::write_all(&mut files, dir.path(), &trace, &run, cfg.limits.budget_us).unwrap();
+    files.commit().unwrap();
     assert_eq!(written.len(), 3);
     for name in written
         .iter()
@@ -361,6 +367,19 @@ fn a_stepper_fault_names_the_sample() {
     .unwrap_err();
     assert_eq!(err.index, 5);
     assert_eq!(err.to_string(), "stepper failed at sample 5: injected");
+}
+
+/// A subnormal step rate has an infinite period, which `Duration` cannot hold: refused before
+/// the loop (paced or not), never a panic.
+#[test]
+fn a_step_rate_without_a_finite_period_is_refused() {
+    let trace = trace(20, 10_000.0);
+    for paced in [false, true] {
+        let mut stepper = ClosedFormStepper::new(true);
+        let err = replay_stepper_only(&trace, &mut stepper, &config(0, paced, 4e-320)).unwrap_err();
+        assert_eq!(err.stage, "configuration");
+        assert!(err.to_string().contains("allowed 1e-3 ..= 1e7 Hz"), "{err}");
+    }
 }
 
 /// Paced at 2 kHz (0.5 ms period) with steps that sleep 1 ms: every step misses its deadline

@@ -21,7 +21,7 @@ pub use bearing_hil_kernel::{crc32, wire};
 use std::fmt;
 use std::path::Path;
 
-pub use validate::ValidationOptions;
+pub use validate::{ValidationOptions, MAX_SAMPLE_RATE_HZ, MIN_SAMPLE_RATE_HZ};
 pub use wire::Sample;
 
 /// What a trace was recorded for and how fast.
@@ -286,12 +286,9 @@ impl Trace {
             Format::Csv => csv::render(self).into_bytes(),
             Format::Binary => binary::encode(self)?,
         };
-        std::fs::write(path, bytes).map_err(|e| {
-            TraceError::new(
-                Location::File,
-                Problem::Io(format!("cannot write {}: {e}", path.display())),
-            )
-        })
+        // Whole or not at all: a half-written trace would fail validation later, far from here.
+        bearing_host_common::output::write_file(path, bytes)
+            .map_err(|e| TraceError::new(Location::File, Problem::Io(e.to_string())))
     }
 }
 

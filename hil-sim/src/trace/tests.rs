@@ -282,6 +282,28 @@ fn binary_content_errors_name_the_record_and_field() {
 }
 
 #[test]
+fn a_subnormal_sample_rate_is_refused_in_csv_and_binary() {
+    // 4e-320 Hz is positive and finite, but its period 1/rate is infinite: every gap check
+    // then compares with NaN, and a replay cannot time its steps.
+    let text = HEAD.replace("sample_rate_hz: 1000", "sample_rate_hz: 4e-320") + "0,1,0,0,0,0\n";
+    let e = csv_error(&text);
+    assert_eq!(
+        e.location,
+        Location::Line {
+            line: 3,
+            column: None
+        }
+    );
+    assert!(matches!(e.problem, Problem::BadMeta(_)), "{e}");
+    assert!(e.to_string().contains("allowed 1e-3 ..= 1e7 Hz"), "{e}");
+    let mut bytes = binary::encode(&whirl(false, 10)).unwrap();
+    bytes[16..24].copy_from_slice(&4e-320f64.to_le_bytes());
+    reseal(&mut bytes);
+    let e = decode_error(&bytes);
+    assert!(matches!(e.problem, Problem::BadMeta(_)), "{e}");
+}
+
+#[test]
 fn streaming_header_and_records_agree_with_whole_file_decoding() {
     // The firmware path: parse the header, then decode and checksum record by record.
     let trace = whirl(true, 33);

@@ -12,6 +12,11 @@ use super::{Location, Problem, Trace, TraceError, TraceMeta};
 /// of the time stamps of a long trace.
 pub const MAX_SAMPLE_RATE_HZ: f64 = 1.0e7;
 
+/// Lowest sample rate accepted (Hz): one sample per 1000 s, the lowest step rate `hil-sim replay
+/// --rate-hz` accepts. It keeps the period 1/rate finite (a subnormal rate such as 4·10⁻³²⁰ Hz
+/// has an infinite period, which no gap check or pacing can use).
+pub const MIN_SAMPLE_RATE_HZ: f64 = 1.0e-3;
+
 /// Tunable limits of the checks.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ValidationOptions {
@@ -39,14 +44,14 @@ pub fn check_identifier(which: &str, id: &str) -> Result<(), Problem> {
     Ok(())
 }
 
-/// Checks the metadata: identifiers and a finite rate in (0, 10 MHz].
+/// Checks the metadata: identifiers and a finite rate in [1 mHz, 10 MHz].
 pub fn check_meta(meta: &TraceMeta) -> Result<(), Problem> {
     check_identifier("bearing", &meta.bearing)?;
     check_identifier("lubricant", &meta.lubricant)?;
     let rate = meta.sample_rate_hz;
-    if !(rate.is_finite() && rate > 0.0 && rate <= MAX_SAMPLE_RATE_HZ) {
+    if !(rate.is_finite() && (MIN_SAMPLE_RATE_HZ..=MAX_SAMPLE_RATE_HZ).contains(&rate)) {
         return Err(Problem::BadMeta(format!(
-            "sample_rate_hz = {rate} must be finite, > 0 and <= {MAX_SAMPLE_RATE_HZ:e} Hz"
+            "sample_rate_hz = {rate:e} is out of range: allowed {MIN_SAMPLE_RATE_HZ:e} ..= {MAX_SAMPLE_RATE_HZ:e} Hz"
         )));
     }
     Ok(())
@@ -92,7 +97,9 @@ pub fn check_sample(
             ));
         }
         let expected_s = 1.0 / sample_rate_hz;
-        if ((step_s - expected_s) / expected_s).abs() > options.gap_tolerance {
+        // A NaN deviation (an infinite period) counts as a gap, not a pass.
+        let on_time = ((step_s - expected_s) / expected_s).abs() <= options.gap_tolerance;
+        if !on_time {
             return Err((
                 "time",
                 Problem::Gap {

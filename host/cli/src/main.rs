@@ -3,11 +3,11 @@
 //! Every subcommand lives in its own module under `cli/` with a clap `Args` type and a
 //! `run` function; this file only dispatches.
 
-use clap::{Parser, Subcommand};
+use clap::Subcommand;
 
 mod cli;
 
-#[derive(Parser)]
+#[derive(clap::Parser)]
 #[command(
     name = "bearing",
     version,
@@ -39,11 +39,12 @@ enum Command {
 }
 
 fn main() -> std::process::ExitCode {
+    bearing_host_common::closed_pipe::end_quietly_when_the_reader_leaves();
     if let Err(e) = bearing_host_common::cpu::check() {
         eprintln!("error: {e}");
         return std::process::ExitCode::from(1);
     }
-    let cli = Cli::parse();
+    let cli: Cli = bearing_host_common::args::parse();
     let result: anyhow::Result<()> = match cli.command {
         Command::Film(args) => cli::film::run(args),
         Command::Static(args) => cli::statics::run(args),

@@ -11,6 +11,7 @@ use std::path::{Path, PathBuf};
 use bearing_core::{BearingDesign, BearingParams, ContactLaw, ParamError};
 use serde::{Deserialize, Serialize};
 
+use crate::rolling::{MAX_ROLLERS, MIN_ROLLERS};
 use crate::toml_lines::{self, TomlLines};
 
 /// A bearing configuration as written in the file.
@@ -112,6 +113,9 @@ pub struct CaseConfig {
     pub speed_rpm: Option<f32>,
 }
 
+/// The values of `[model] contact_law`.
+pub const CONTACT_LAWS: [&str; 2] = ["palmgren", "lundberg"];
+
 /// A configuration that could not be read or was refused.
 #[derive(Debug)]
 pub struct ConfigError {
@@ -159,13 +163,26 @@ impl BearingConfig {
             ConfigError {
                 path: path.to_owned(),
                 line,
-                field: None,
+                field: line.and_then(|l| toml_lines::key_on_line(text, l)),
                 message: e.message().trim().to_owned(),
             }
         })?;
+        let lines = TomlLines::new(text);
+        let law = config.model.contact_law.as_str();
+        if !CONTACT_LAWS.contains(&law) {
+            return Err(ConfigError {
+                path: path.to_owned(),
+                line: lines.line_in_table("model", 0, "contact_law"),
+                field: Some("contact_law".into()),
+                message: format!(
+                    "contact_law = {law:?} is not allowed: it must be one of {}",
+                    CONTACT_LAWS.map(|l| format!("{l:?}")).join(", ")
+                ),
+            });
+        }
         let params = config.params().map_err(|e| ConfigError {
             path: path.to_owned(),
-            line: TomlLines::new(text).line_of_key(e.field),
+            line: lines.line_of_key(e.field),
             field: Some(e.field.to_owned()),
             message: e.to_string(),
         })?;
@@ -209,6 +226,20 @@ impl BearingConfig {
     /// it (the first refused field is named).
     pub fn params(&self) -> Result<BearingParams, ParamError> {
         let params = self.design()?.params()?;
+        // The core's geometry takes up to 128 rollers; the host's run-time bearing (`rolling`)
+        // is compiled for MIN_ROLLERS ..= MAX_ROLLERS, so a count outside it would be refused
+        // later, far from the file.
+        let count = self.geometry.roller_count;
+        if !(MIN_ROLLERS..=MAX_ROLLERS).contains(&count) {
+            return Err(ParamError {
+                field: "roller_count",
+                value: f32::from(count),
+                allowed: bearing_core::Allowed::Range {
+                    min: f32::from(MIN_ROLLERS),
+                    max: f32::from(MAX_ROLLERS),
+                },
+            });
+        }
         if let Some(v) = self.case.radial_load_n {
             if !(v.is_finite() && v >= 0.0) {
                 return Err(ParamError {
@@ -275,6 +306,43 @@ mod tests {
             "{shown}"
         );
         assert!(shown.contains("pitch_diameter_m"), "{shown}");
+    }
+
+    /// The line of `prefix…` in `text` (1-based).
+    fn line_of(text: &str, prefix: &str) -> usize {
+        text.lines().position(|l| l.starts_with(prefix)).unwrap() + 1
+    }
+
+    #[test]
+    fn an_unknown_contact_law_is_named_with_the_laws_allowed() {
+        let text = std::fs::read_to_string(bundled("hub_motor.toml")).unwrap();
+        let bad = text.replace("contact_law = \"palmgren\"", "contact_law = \"hertz\"");
+        let e = BearingConfig::parse(&bad, Path::new("c.toml")).unwrap_err();
+        assert_eq!(e.line, Some(line_of(&bad, "contact_law")));
+        let shown = e.to_string();
+        assert!(shown.contains("\"hertz\""), "{shown}");
+        assert!(shown.contains("\"palmgren\", \"lundberg\""), "{shown}");
+        assert!(!shown.contains("NaN"), "{shown}");
+    }
+
+    #[test]
+    fn a_roller_count_the_host_cannot_step_is_refused_at_load_with_its_line() {
+        let text = std::fs::read_to_string(bundled("hub_motor.toml")).unwrap();
+        for count in [3, 5] {
+            let bad = text.replace("roller_count = 17", &format!("roller_count = {count}"));
+            let e = BearingConfig::parse(&bad, Path::new("r.toml")).unwrap_err();
+            assert_eq!(e.line, Some(line_of(&bad, "roller_count")), "{e}");
+            assert!(e.to_string().contains("[6, 40]"), "{e}");
+        }
+    }
+
+    #[test]
+    fn a_type_error_names_the_field() {
+        let text = std::fs::read_to_string(bundled("hub_motor.toml")).unwrap();
+        let bad = text.replace("roller_count = 17", "roller_count = \"x\"");
+        let e = BearingConfig::parse(&bad, Path::new("t.toml")).unwrap_err();
+        assert_eq!(e.line, Some(line_of(&bad, "roller_count")));
+        assert_eq!(e.field.as_deref(), Some("roller_count"), "{e}");
     }
 
     #[test]

@@ -7,6 +7,14 @@
 use toml::de::{DeTable, DeValue};
 use toml::Spanned;
 
+/// The key of a `key = value` line (1-based `line`) of `text`: the field a TOML type error on
+/// that line is about (the `toml` crate names the line but not the key).
+pub fn key_on_line(text: &str, line: usize) -> Option<String> {
+    let (key, _) = text.lines().nth(line.checked_sub(1)?)?.split_once('=')?;
+    let key = key.trim().trim_matches('"');
+    (!key.is_empty() && !key.starts_with('#') && !key.starts_with('[')).then(|| key.to_owned())
+}
+
 /// A TOML document with the spans of its keys and table headers.
 pub struct TomlLines<'a> {
     text: &'a str,

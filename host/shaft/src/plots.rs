@@ -113,6 +113,12 @@ pub fn orbit(xy: &[[f64; 2]], title: &str, path: &Path) -> PlotResult {
 }
 
 /// Amplitude spectrum (log amplitude) with vertical markers at the given frequencies (Hz).
+///
+/// The band is 1.5 × the highest marker, widened to at least one frequency bin and at most the
+/// spectrum's last bin; the amplitude axis spans 6 decades below the largest amplitude shown, or
+/// 10⁻³⁰ … 2·10⁻³⁰ m when nothing in the band is above zero (a model without loads, a record
+/// too short for a line): both bounds are always finite and positive, which the log axis needs
+/// to place its ticks.
 pub fn spectrum(
     spec: &[(f64, f64)],
     markers: &[(String, f64)],
@@ -122,15 +128,23 @@ pub fn spectrum(
     let root = BitMapBackend::new(path, (1000, 600)).into_drawing_area();
     root.fill(&WHITE)?;
     let pts: Vec<(f64, f64)> = spec.iter().skip(1).copied().filter(|p| p.1 > 0.0).collect();
+    let last_bin_hz = pts.last().map_or(1.0, |p| p.0);
+    let first_bin_hz = pts.first().map_or(1.0, |p| p.0);
     let f_max = markers.iter().map(|m| m.1).fold(0.0, f64::max) * 1.5;
-    let f_max = if f_max > 0.0 {
-        f_max.min(pts.last().map_or(1.0, |p| p.0))
+    let f_max = if f_max.is_finite() && f_max > 0.0 {
+        f_max.max(first_bin_hz).min(last_bin_hz)
     } else {
-        pts.last().map_or(1.0, |p| p.0)
+        last_bin_hz
     };
     let shown: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0 <= f_max).collect();
-    let a_max = shown.iter().map(|p| p.1).fold(1e-30, f64::max);
-    let a_min = (a_max * 1e-6).max(shown.iter().map(|p| p.1).fold(f64::INFINITY, f64::min));
+    let a_max = shown
+        .iter()
+        .map(|p| p.1)
+        .filter(|a| a.is_finite())
+        .fold(1e-30, f64::max);
+    let a_min = (a_max * 1e-6)
+        .max(shown.iter().map(|p| p.1).fold(f64::INFINITY, f64::min))
+        .min(a_max);
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 24))
         .margin(15)

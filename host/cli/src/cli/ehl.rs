@@ -8,8 +8,9 @@
 
 use anyhow::{bail, Context, Result};
 use bearing_ehl::{
-    self as ehl, convergence, ContactCase, EhlSolution, SolverOptions, ViscosityLaw,
+    self as ehl, convergence, ContactCase, EhlError, EhlSolution, SolverOptions, ViscosityLaw,
 };
+use bearing_host_common::output::OutputFiles;
 use clap::{Args, Subcommand};
 use std::path::PathBuf;
 
@@ -150,14 +151,71 @@ impl CaseArgs {
                 }
             }
             ContactCase::new(v[0] / v[1], v[2], v[3], v[4], v[5], v[6])
-                .map_err(|e| anyhow::anyhow!("{e} (flags --load/--length → load per length)"))
+                .map_err(|e| name_flags(e, &SI_FIELDS, "--load --length … --eta0"))
         } else if groups[1] {
             let v = need(&wug)?;
-            ContactCase::from_dimensionless(v[0], v[1], v[2]).map_err(|e| anyhow::anyhow!("{e}"))
+            ContactCase::from_dimensionless(v[0], v[1], v[2])
+                .map_err(|e| name_flags(e, &["W", "U", "G"], "--w --u --g"))
         } else {
             let v = need(&ml)?;
-            ContactCase::from_moes(v[0], v[1]).map_err(|e| anyhow::anyhow!("{e}"))
+            ContactCase::from_moes(v[0], v[1]).map_err(|e| name_flags(e, &["M", "L"], "--m --l"))
         }
+    }
+}
+
+/// The solver fields the SI flags set (load per length from --load / --length).
+const SI_FIELDS: [&str; 6] = [
+    "load_per_length_n_per_m",
+    "entrainment_speed_m_s",
+    "reduced_radius_m",
+    "reduced_modulus_pa",
+    "pressure_viscosity_pa_inv",
+    "viscosity_pa_s",
+];
+
+/// The flag a solver input or option comes from: the user typed flags, not the solver's field
+/// names. `None` for a quantity no single flag sets.
+fn flag_of(field: &str) -> Option<&'static str> {
+    Some(match field {
+        "load_per_length_n_per_m" => "--load / --length (load per length, N/m)",
+        "entrainment_speed_m_s" => "--entrainment",
+        "reduced_radius_m" => "--radius",
+        "reduced_modulus_pa" => "--modulus",
+        "pressure_viscosity_pa_inv" => "--alpha",
+        "viscosity_pa_s" => "--eta0",
+        "W" => "--w",
+        "U" => "--u",
+        "G" => "--g",
+        "M" => "--m",
+        "L" => "--l",
+        "nodes" => "--nodes",
+        _ => return None,
+    })
+}
+
+/// A solver error in the words of the command line: the flag that set the refused value, or,
+/// for a quantity the solver derives from the flags of the case (`given`), those flags. `direct`
+/// lists the solver fields the case's flags set one to one.
+fn name_flags(error: EhlError, direct: &[&str], given: &str) -> anyhow::Error {
+    match &error {
+        EhlError::InvalidInput {
+            field,
+            value,
+            allowed,
+        } => match flag_of(field) {
+            Some(flag) if direct.contains(field) => {
+                anyhow::anyhow!("{flag} = {value:e} is out of range: allowed {allowed}")
+            }
+            Some(flag) => {
+                anyhow::anyhow!("{given} give {flag} = {value:e}, out of range: allowed {allowed}")
+            }
+            None => anyhow::anyhow!("{given}: {error}"),
+        },
+        EhlError::InvalidOption { field, message } => match flag_of(field) {
+            Some(flag) => anyhow::anyhow!("{flag}: {message}"),
+            None => anyhow::anyhow!("{error}"),
+        },
+        EhlError::NotConverged { .. } => anyhow::anyhow!("{error}"),
     }
 }
 
@@ -171,10 +229,9 @@ pub fn run(args: EhlArgs) -> Result<()> {
 }
 
 fn solve(a: SolveArgs) -> Result<()> {
-    let result = a
-        .case
-        .case()
-        .and_then(|c| ehl::solve(&c, &a.case.options()).map_err(|e| anyhow::anyhow!("{e}")));
+    let result = a.case.case().and_then(|c| {
+        ehl::solve(&c, &a.case.options()).map_err(|e| name_flags(e, &[], "the case"))
+    });
     let sol = match result {
         Ok(s) => s,
         Err(e) => {
@@ -187,14 +244,23 @@ fn solve(a: SolveArgs) -> Result<()> {
             return Err(e);
         }
     };
+    // Both files or neither: a failed plot leaves no profile behind.
+    let mut files = OutputFiles::new();
     if let Some(path) = &a.profile {
-        let f =
-            std::fs::File::create(path).with_context(|| format!("--profile {}", path.display()))?;
-        sol.write_profile_csv(std::io::BufWriter::new(f))?;
+        let temp = files
+            .stage(path)
+            .with_context(|| format!("--profile {}", path.display()))?;
+        let mut csv = Vec::new();
+        sol.write_profile_csv(&mut csv)?;
+        std::fs::write(temp, csv).with_context(|| format!("--profile {}", path.display()))?;
     }
     if let Some(path) = &a.plot {
-        super::ehl_plot::plot(&sol, path).with_context(|| format!("--plot {}", path.display()))?;
+        let temp = files
+            .stage(path)
+            .with_context(|| format!("--plot {}", path.display()))?;
+        super::ehl_plot::plot(&sol, &temp).with_context(|| format!("--plot {}", path.display()))?;
     }
+    files.commit()?;
     if a.json {
         let v = serde_json::json!({
             "converged": true,
@@ -279,7 +345,8 @@ fn print_solution(s: &EhlSolution) {
 
 fn convergence_table(a: ConvergenceArgs) -> Result<()> {
     let case = a.case.case()?;
-    let study = convergence::study(&case, &a.case.options()).map_err(|e| anyhow::anyhow!("{e}"))?;
+    let study =
+        convergence::study(&case, &a.case.options()).map_err(|e| name_flags(e, &[], "the case"))?;
     if a.json {
         println!("{}", serde_json::to_string_pretty(&study)?);
         return Ok(());
@@ -391,7 +458,7 @@ mod tests {
         let e = case_of(&["--m", "nan", "--l", "5"])
             .unwrap_err()
             .to_string();
-        assert!(e.contains('M'), "{e}");
+        assert!(e.contains("--m = NaN"), "{e}");
         assert!(case_of(&["--m", "30"])
             .unwrap_err()
             .to_string()

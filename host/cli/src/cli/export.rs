@@ -23,7 +23,8 @@ pub struct ExportArgs {
 pub fn run(args: ExportArgs) -> Result<()> {
     let model = ModelFile::load(&args.model)?;
     let code = render(&model)?;
-    std::fs::write(&args.out, code).with_context(|| format!("writing {}", args.out.display()))?;
+    bearing_host_common::output::write_file(&args.out, code)
+        .with_context(|| format!("writing {}", args.out.display()))?;
     eprintln!("wrote {} from {}", args.out.display(), args.model.display());
     // The host's integer path is exact either way; a layer outside the direct requantisation
     // only runs slower there (`bearing_core::film::ann::int::direct_requantisation`).

@@ -16,6 +16,7 @@ use serde_json::json;
 use super::common::{non_negative, positive, print_json, rad_per_s};
 use super::film_plot::{self, PlotOver};
 use bearing_host_common::config::BearingConfig;
+use bearing_host_common::output::write_with;
 
 /// Film thickness of a line contact from every available film model.
 ///
@@ -72,20 +73,100 @@ pub struct FilmArgs {
     pub plot_span: f64,
 }
 
+/// Highest peak Hertz pressure accepted (Pa): 4.0 GPa, the contact stress at which ISO 76
+/// rates the static load of a roller bearing (a permanent deformation of 10⁻⁴ of the roller
+/// diameter). Above it the steel yields and the elastic contact every film model assumes no
+/// longer holds; the numerical solver is checked to 3.5 GPa (docs/physics.md §5.2, §5.3).
+pub const MAX_HERTZ_PRESSURE_PA: f64 = 4.0e9;
+
+/// Highest shaft speed `--speed-rpm` accepts (rpm): the core's limit
+/// [`bearing_core::params::MAX_SHAFT_SPEED_RAD_S`], ≈ 954 930 rpm.
+fn max_speed_rpm() -> f64 {
+    f64::from(bearing_core::params::MAX_SHAFT_SPEED_RAD_S) * 30.0 / std::f64::consts::PI
+}
+
+/// Range of the pressure–viscosity coefficient α (1/Pa): 1–100 GPa⁻¹, lubricating oils (the
+/// network's training box is 10–30 GPa⁻¹, docs/physics.md §5.3). The regression formulas, the
+/// fallback of every core film model, scale as G^0.56 = (αE')^0.56 (docs/physics.md §5.1), so
+/// at α → 0 (an iso-viscous lubricant) they give no film at all.
+const ALPHA_RANGE_PA_INV: (f64, f64) = (1.0e-9, 1.0e-7);
+
+/// The value of `flag` as the core's f32, or a refusal naming it when single precision cannot
+/// hold it (overflow to infinity or underflow to zero).
+fn single_precision(flag: &str, value: f64) -> anyhow::Result<f32> {
+    let v = value as f32;
+    if !(v.is_normal() && v > 0.0) {
+        bail!(
+            "{flag} = {value:e} does not fit the core's single precision: allowed {:e} ..= {:e}",
+            f32::MIN_POSITIVE,
+            f32::MAX
+        );
+    }
+    Ok(v)
+}
+
+/// Peak Hertz pressure p_h = √(w E' / (2π R)) (Pa, docs/physics.md §1) of a load per length
+/// `w`, reduced radius `radius_m` and modulus `modulus_pa`.
+fn hertz_pressure_pa(w: f64, radius_m: f64, modulus_pa: f64) -> f64 {
+    (w * modulus_pa / (2.0 * std::f64::consts::PI * radius_m)).sqrt()
+}
+
+/// The load (N) over `length_m` at which p_h reaches [`MAX_HERTZ_PRESSURE_PA`].
+fn max_load_n(length_m: f64, radius_m: f64, modulus_pa: f64) -> f64 {
+    2.0 * std::f64::consts::PI * radius_m * MAX_HERTZ_PRESSURE_PA.powi(2) / modulus_pa * length_m
+}
+
+/// Refuses a contact whose peak Hertz pressure exceeds what bearing steel carries, naming the
+/// load flag and the largest load allowed for this contact.
+fn check_hertz(flag: &str, contact: &ContactInput) -> anyhow::Result<()> {
+    let (q, l) = (f64::from(contact.load_n), f64::from(contact.length_m));
+    let (r, e) = (
+        f64::from(contact.reduced_radius_m),
+        f64::from(contact.reduced_modulus_pa),
+    );
+    let p_h = hertz_pressure_pa(q / l, r, e);
+    let steel_carries_it = p_h <= MAX_HERTZ_PRESSURE_PA;
+    if !steel_carries_it {
+        bail!(
+            "{flag} = {q:e} N gives a peak Hertz pressure of {:.3} GPa: steel carries at most {} GPa \
+             (ISO 76 static rating); allowed {flag} ≤ {:.4e} N for this contact",
+            p_h * 1e-9,
+            MAX_HERTZ_PRESSURE_PA * 1e-9,
+            max_load_n(l, r, e)
+        );
+    }
+    Ok(())
+}
+
+/// Refuses `--alpha` outside [`ALPHA_RANGE_PA_INV`].
+fn check_alpha(alpha: f64) -> anyhow::Result<()> {
+    let (lo, hi) = ALPHA_RANGE_PA_INV;
+    if !(lo..=hi).contains(&alpha) {
+        bail!(
+            "--alpha = {alpha:e} 1/Pa is out of range: allowed {lo:e} ..= {hi:e} 1/Pa (lubricating \
+             oils; the regression formulas every core film model falls back to give no film as \
+             α → 0)"
+        );
+    }
+    Ok(())
+}
+
 /// Draw `--plot` for `contact` if asked, and say where.
 fn maybe_plot(args: &FilmArgs, contact: &ContactInput, title: &str) -> anyhow::Result<()> {
     if let Some(path) = &args.plot {
         if args.plot_span <= 1.0 {
             bail!("--plot-span must exceed 1 (got {})", args.plot_span);
         }
-        film_plot::plot(
-            contact,
-            args.plot_over,
-            usize::from(args.plot_points),
-            args.plot_span,
-            title,
-            path,
-        )
+        write_with(path, |temp| {
+            film_plot::plot(
+                contact,
+                args.plot_over,
+                usize::from(args.plot_points),
+                args.plot_span,
+                title,
+                temp,
+            )
+        })
         .with_context(|| format!("drawing {}", path.display()))?;
         if !args.json {
             println!("plot: {}", path.display());
@@ -212,14 +293,27 @@ fn print_human(title: &str, r: &serde_json::Value) {
 pub fn run(args: FilmArgs) -> anyhow::Result<()> {
     if let Some(path) = &args.config {
         let (config, params) = BearingConfig::load(path)?;
-        let speed = rad_per_s(
-            args.speed_rpm
-                .context("--speed-rpm is required with --config")?,
-        );
-        let load = args
-            .roller_load
-            .context("--roller-load is required with --config")? as f32;
+        let speed_rpm = args
+            .speed_rpm
+            .context("--speed-rpm is required with --config")?;
+        if speed_rpm > max_speed_rpm() {
+            bail!(
+                "--speed-rpm = {speed_rpm:e} is out of range: allowed (0, {:.0}] rpm (the core's \
+                 highest shaft speed, 10⁵ rad/s)",
+                max_speed_rpm()
+            );
+        }
+        let speed = rad_per_s(speed_rpm);
+        let load = single_precision(
+            "--roller-load",
+            args.roller_load
+                .context("--roller-load is required with --config")?,
+        )?;
         let inner_contact = params.contact_input(false, load, speed);
+        // Both contacts must hold the load; the smaller reduced radius (the inner) is the
+        // stricter, but each is checked.
+        check_hertz("--roller-load", &inner_contact)?;
+        check_hertz("--roller-load", &params.contact_input(true, load, speed))?;
         let inner = report(&inner_contact);
         let outer = report(&params.contact_input(true, load, speed));
         maybe_plot(
@@ -257,16 +351,18 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
             missing.join(", ")
         );
     }
-    let v = |o: Option<f64>| o.unwrap_or(0.0) as f32;
+    let v = |flag: &str, o: Option<f64>| single_precision(flag, o.unwrap_or(0.0));
+    check_alpha(args.alpha.unwrap_or(0.0))?;
     let contact = ContactInput {
-        load_n: v(args.load),
-        length_m: v(args.length),
-        entrainment_speed_m_s: v(args.entrainment),
-        reduced_radius_m: v(args.radius),
-        reduced_modulus_pa: v(args.modulus),
-        pressure_viscosity_pa_inv: v(args.alpha),
-        viscosity_pa_s: v(args.eta0),
+        load_n: v("--load", args.load)?,
+        length_m: v("--length", args.length)?,
+        entrainment_speed_m_s: v("--entrainment", args.entrainment)?,
+        reduced_radius_m: v("--radius", args.radius)?,
+        reduced_modulus_pa: v("--modulus", args.modulus)?,
+        pressure_viscosity_pa_inv: v("--alpha", args.alpha)?,
+        viscosity_pa_s: v("--eta0", args.eta0)?,
     };
+    check_hertz("--load", &contact)?;
     if !contact.is_valid() {
         bail!("the contact is not valid in f32 (a value overflows or underflows single precision)");
     }

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
 use bearing_core::film::{ann, FilmModel, FilmSource};
+use bearing_host_common::output::OutputFiles;
 use bearing_train::ann::export::fingerprint;
 use bearing_train::ann::features::{InputSet, TargetForm};
 use bearing_train::ann::metrics::Metrics;
@@ -272,13 +273,15 @@ fn sweep(args: SweepArgs) -> Result<()> {
         heading(&config, &args.data.display().to_string()),
         markdown(&rows)
     );
-    std::fs::write(&args.out_md, &md)
-        .with_context(|| format!("writing {}", args.out_md.display()))?;
-    std::fs::write(
-        &args.out_json,
-        serde_json::to_string_pretty(&serde_json::json!({"config": config, "rows": rows}))?,
-    )
-    .with_context(|| format!("writing {}", args.out_json.display()))?;
+    let json = serde_json::to_string_pretty(&serde_json::json!({"config": config, "rows": rows}))?;
+    let mut files = OutputFiles::new();
+    for (path, text) in [(&args.out_md, &md), (&args.out_json, &json)] {
+        let temp = files
+            .stage(path)
+            .with_context(|| format!("writing {}", path.display()))?;
+        std::fs::write(temp, text).with_context(|| format!("writing {}", path.display()))?;
+    }
+    files.commit()?;
     print!("{md}");
     Ok(())
 }

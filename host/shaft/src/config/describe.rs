@@ -13,6 +13,18 @@ use crate::loads::{GearMesh, Load, LoadSet};
 use crate::model::{BearingSite, RotorDescription};
 use crate::motor::Pmsm;
 
+/// Largest Young's modulus accepted (Pa): diamond's, ≈ 1.2 TPa, the stiffest bulk solid.
+const MAX_YOUNGS_MODULUS_PA: f64 = 1.2e12;
+/// Largest shear modulus accepted (Pa): diamond's is ≈ 0.5 TPa.
+const MAX_SHEAR_MODULUS_PA: f64 = 6.0e11;
+/// Largest density accepted (kg/m³): osmium, the densest element, 22 590 kg/m³.
+const MAX_DENSITY_KG_M3: f64 = 2.3e4;
+/// Largest section diameter accepted (m): turbo-generator rotors, the largest shafts built,
+/// are about 2 m across. Beyond such bounds the element matrices (∝ d⁴ E, d² ρ) lose every
+/// significant digit or overflow, and the failure surfaced later as a singular stiffness or an
+/// eigen-solver that did not converge, without the file or the field.
+const MAX_SECTION_DIAMETER_M: f64 = 10.0;
+
 pub(super) fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescription, ConfigError> {
     let _ = f.description;
     let n_nodes = f.nodes_m.len();
@@ -40,15 +52,36 @@ pub(super) fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescripti
     }
     let m = &f.material;
     let material = Material {
-        youngs_modulus: loc.positive(
+        youngs_modulus: loc.range(
             "material",
             0,
             "youngs_modulus_pa",
             m.youngs_modulus_pa,
+            0.0,
+            MAX_YOUNGS_MODULUS_PA,
+            true,
             "Pa",
         )?,
-        shear_modulus: loc.positive("material", 0, "shear_modulus_pa", m.shear_modulus_pa, "Pa")?,
-        density: loc.positive("material", 0, "density_kg_m3", m.density_kg_m3, "kg/m³")?,
+        shear_modulus: loc.range(
+            "material",
+            0,
+            "shear_modulus_pa",
+            m.shear_modulus_pa,
+            0.0,
+            MAX_SHEAR_MODULUS_PA,
+            true,
+            "Pa",
+        )?,
+        density: loc.range(
+            "material",
+            0,
+            "density_kg_m3",
+            m.density_kg_m3,
+            0.0,
+            MAX_DENSITY_KG_M3,
+            true,
+            "kg/m³",
+        )?,
     };
     let nu = material.poisson_ratio();
     if !(-1.0..0.5).contains(&nu) {
@@ -95,7 +128,16 @@ pub(super) fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescripti
                 ),
             ));
         }
-        let outer = loc.positive("section", i, "outer_diameter_m", s.outer_diameter_m, "m")?;
+        let outer = loc.range(
+            "section",
+            i,
+            "outer_diameter_m",
+            s.outer_diameter_m,
+            0.0,
+            MAX_SECTION_DIAMETER_M,
+            true,
+            "m",
+        )?;
         let inner = loc.range(
             "section",
             i,
@@ -137,7 +179,34 @@ pub(super) fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescripti
     let element_diameters = element_diameters
         .into_iter()
         .enumerate()
-        .map(|(e, d)| d.ok_or_else(|| loc.err("section", 0, "from_node", format!("element between nodes {e} and {} has no section: sections must cover 0 … {}", e + 1, n_nodes - 1))))
+        .map(|(e, d)| {
+            d.ok_or_else(|| {
+                // Blame the section next to the gap: the one ending where it starts, else the
+                // first one starting after it.
+                let (i, key) = f
+                    .section
+                    .iter()
+                    .position(|s| s.to_node == e)
+                    .map(|i| (i, "to_node"))
+                    .or_else(|| {
+                        (0..f.section.len())
+                            .filter(|&i| f.section[i].from_node > e)
+                            .min_by_key(|&i| f.section[i].from_node)
+                            .map(|i| (i, "from_node"))
+                    })
+                    .unwrap_or((0, "from_node"));
+                loc.err(
+                    "section",
+                    i,
+                    key,
+                    format!(
+                        "element between nodes {e} and {} has no section: sections must cover 0 … {}",
+                        e + 1,
+                        n_nodes - 1
+                    ),
+                )
+            })
+        })
         .collect::<Result<Vec<_>, _>>()?;
 
     let mut disks = Vec::new();

@@ -57,7 +57,8 @@ impl Locator<'_> {
                 index,
                 key,
                 format!(
-                    "{value} is not allowed: must be finite and in {bracket}{lo}, {hi}] {unit}"
+                    "{} is not allowed: must be finite and in {bracket}{lo}, {hi}] {unit}",
+                    number(value)
                 ),
             ))
         }
@@ -124,5 +125,16 @@ impl Locator<'_> {
         why: &str,
     ) -> Result<T, ConfigError> {
         v.ok_or_else(|| self.err(t, i, k, format!("missing: required {why}")))
+    }
+}
+
+/// `value` as written in a file: plain decimals for ordinary magnitudes, scientific notation
+/// otherwise (Rust's `{}` spells 1e200 with 201 digits).
+fn number(value: f64) -> String {
+    let magnitude = value.abs();
+    if magnitude == 0.0 || !value.is_finite() || (1e-4..1e15).contains(&magnitude) {
+        format!("{value}")
+    } else {
+        format!("{value:e}")
     }
 }

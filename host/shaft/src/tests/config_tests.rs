@@ -112,6 +112,62 @@ fn syntax_and_unknown_field_errors_carry_the_line() {
     );
 }
 
+/// Finite but beyond any material or shaft (10⁸ × diamond's modulus, 10³⁰⁰ × osmium's density,
+/// a 10¹⁹⁸ m shaft): refused at load with file, line and field, not later as a singular
+/// stiffness or an eigen-solver that did not converge.
+#[test]
+fn absurd_finite_values_are_refused_with_location() {
+    for (good, bad, line, field, max) in [
+        (
+            "outer_diameter_m = 0.05",
+            "outer_diameter_m = 1e200",
+            9,
+            "section[0].outer_diameter_m",
+            "10]",
+        ),
+        (
+            "density_kg_m3 = 7810.0",
+            "density_kg_m3 = 1e308",
+            5,
+            "material.density_kg_m3",
+            "23000]",
+        ),
+        (
+            "youngs_modulus_pa = 211e9",
+            "youngs_modulus_pa = 1e20",
+            3,
+            "material.youngs_modulus_pa",
+            "1200000000000]",
+        ),
+    ] {
+        let e = error_of(&GOOD.replace(good, bad));
+        let value = bad.split(" = ").nth(1).unwrap();
+        assert!(
+            e.starts_with(&format!(
+                "x/shaft.toml:{line}: {field}: {value} is not allowed"
+            )),
+            "{e}"
+        );
+        assert!(e.contains(max), "{e}");
+    }
+}
+
+/// A gap between two sections is reported against the section that ends where the gap
+/// starts, not always against section[0].
+#[test]
+fn a_gap_between_sections_names_the_section_before_it() {
+    let text = GOOD.replace("nodes_m = [0.0, 0.5, 1.0]", "nodes_m = [0.0, 0.25, 0.5, 0.75, 1.0]")
+        .replace("from_node = 0\nto_node = 2\n", "from_node = 0\nto_node = 1\n")
+        + "[[section]]\nfrom_node = 1\nto_node = 2\nouter_diameter_m = 0.05\n[[section]]\nfrom_node = 3\nto_node = 4\nouter_diameter_m = 0.05\n";
+    let e = error_of(&text);
+    let line = text.lines().position(|l| l == "to_node = 2").unwrap() + 1;
+    assert!(
+        e.starts_with(&format!("x/shaft.toml:{line}: section[1].to_node:")),
+        "{e}"
+    );
+    assert!(e.contains("nodes 2 and 3 has no section"), "{e}");
+}
+
 #[test]
 fn uncovered_elements_and_decreasing_nodes_are_refused() {
     let e = error_of(&GOOD.replace("to_node = 2", "to_node = 1"));

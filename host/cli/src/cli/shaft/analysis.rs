@@ -1,7 +1,10 @@
 //! `bearing shaft static`, `modes` and `campbell`: the analyses that need no time integration
 //! (equilibrium, and the eigenproblem with the bearings linearised there).
 
+use std::path::PathBuf;
+
 use anyhow::Result;
+use bearing_host_common::output::write_with;
 use bearing_shaft::operating::{campbell, operating_modes};
 use bearing_shaft::plots;
 
@@ -16,8 +19,10 @@ pub(super) fn cmd_static(a: StaticArgs) -> Result<()> {
     let eq = bearing_shaft::statics::equilibrium(&model, omega, &mut bearings)?;
     let nodes: Vec<_> = (0..model.n_nodes())
         .map(|i| {
+            // Node DOFs [x, y, θx, θy] (`bearing_shaft::element`): rotations about x and y (rad).
             serde_json::json!({"node": i, "z_m": model.description.node_positions[i],
-                "x_m": eq.q[4 * i], "y_m": eq.q[4 * i + 1]})
+                "x_m": eq.q[4 * i], "y_m": eq.q[4 * i + 1],
+                "theta_x_rad": eq.q[4 * i + 2], "theta_y_rad": eq.q[4 * i + 3]})
         })
         .collect();
     let reactions: Vec<_> = model
@@ -62,12 +67,26 @@ pub(super) fn cmd_modes(a: ModesArgs) -> Result<()> {
     let n = check_count("modes", a.modes, 1, 200)?;
     let (_, modes) = operating_modes(&model, omega, n, true)?;
     if let Some(p) = &a.plot {
-        plots::mode_shapes(&model.description.node_positions, &modes, p)
-            .map_err(|e| anyhow::anyhow!("writing {}: {e}", p.display()))?;
+        write_with(p, |temp| {
+            plots::mode_shapes(&model.description.node_positions, &modes, temp)
+                .map_err(|e| std::io::Error::other(e.to_string()))
+        })
+        .map_err(|e| anyhow::anyhow!("writing {}: {e}", p.display()))?;
     }
     if a.model.json {
         let f: Vec<f64> = modes.iter().map(|m| m.frequency).collect();
-        println!("{}", serde_json::json!({"frequencies_rad_s": f}));
+        let per_mode: Vec<_> = modes
+            .iter()
+            .map(|m| {
+                serde_json::json!({"frequency_rad_s": m.frequency,
+                    "frequency_hz": m.frequency / (2.0 * std::f64::consts::PI),
+                    "damping_ratio": m.damping_ratio, "whirl": m.whirl})
+            })
+            .collect();
+        println!(
+            "{}",
+            serde_json::json!({"speed_rpm": a.speed_rpm, "frequencies_rad_s": f, "modes": per_mode})
+        );
         return Ok(());
     }
     println!("modes at {} rpm ({} DOF)", a.speed_rpm, model.n_dof());
@@ -95,8 +114,20 @@ pub(super) fn cmd_campbell(a: CampbellArgs) -> Result<()> {
     let n = check_count("modes", a.modes, 1, 200)?;
     let speeds: Vec<f64> = (0..=steps).map(|k| max * k as f64 / steps as f64).collect();
     let points = campbell(&model, &speeds, n)?;
-    plots::campbell(&points, &mesh_orders(&model), &a.plot)
-        .map_err(|e| anyhow::anyhow!("writing {}: {e}", a.plot.display()))?;
+    // The table (or JSON) is the answer; the plot is written when asked, and by default only
+    // with the table.
+    let plot = match &a.plot {
+        Some(p) => Some(p.clone()),
+        None if a.model.json => None,
+        None => Some(PathBuf::from("campbell.png")),
+    };
+    if let Some(p) = &plot {
+        write_with(p, |temp| {
+            plots::campbell(&points, &mesh_orders(&model), temp)
+                .map_err(|e| std::io::Error::other(e.to_string()))
+        })
+        .map_err(|e| anyhow::anyhow!("writing {}: {e}", p.display()))?;
+    }
     if a.model.json {
         println!("{}", serde_json::to_string(&points)?);
     } else {
@@ -108,7 +139,9 @@ pub(super) fn cmd_campbell(a: CampbellArgs) -> Result<()> {
                 .collect();
             println!("{:>8.0} rpm: {} rad/s", p.speed_rpm, f.join(" "));
         }
-        println!("plot: {}", a.plot.display());
+        if let Some(p) = &plot {
+            println!("plot: {}", p.display());
+        }
     }
     Ok(())
 }

@@ -104,9 +104,9 @@ struct CampbellArgs {
     /// Number of modes (1 … 200).
     #[arg(long, default_value_t = 8)]
     modes: usize,
-    /// Output PNG.
-    #[arg(long, default_value = "campbell.png")]
-    plot: PathBuf,
+    /// Output PNG; default `campbell.png` with the table, none with --json.
+    #[arg(long)]
+    plot: Option<PathBuf>,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]

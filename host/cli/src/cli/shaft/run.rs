@@ -1,9 +1,10 @@
 //! `bearing shaft run`: the time response at one speed (or a run-up / run-down ramp), its
 //! CSV records, orbit, spectrum and waterfall plots and the cost summary.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
+use bearing_host_common::output::OutputFiles;
 use bearing_shaft::bearing::BearingSpec;
 use bearing_shaft::model::RotorModel;
 use bearing_shaft::simulate::run as run_time;
@@ -24,28 +25,45 @@ pub(super) fn cmd_run(a: RunArgs) -> Result<()> {
     s.spin_speed = omega;
     s.spin_speed_end = end;
     let r = run_time(&model, &s, None)?;
+    // Every file of the run or none: staged under temporary names, renamed at the end.
+    let mut files = OutputFiles::new();
+    let mut stage = |path: &Path| {
+        files
+            .stage(path)
+            .with_context(|| format!("writing {}", path.display()))
+    };
     let csv = with_suffix(&a.out, ".csv");
-    output::write_run_csv(&csv, &r).with_context(|| format!("writing {}", csv.display()))?;
+    output::write_run_csv(&stage(&csv)?, &r)
+        .with_context(|| format!("writing {}", csv.display()))?;
     let n_b = model.description.bearings.len();
     for b in 0..n_b {
         let p = with_suffix(&a.out, &format!("_b{b}_trace.csv"));
-        // hil-sim names bearings by their config file stem and knows the thesis oil.
-        let id = match &model.description.bearings[b].spec {
-            BearingSpec::Roller { config, .. } => config
-                .file_stem()
-                .map_or("roller".into(), |s| s.to_string_lossy().into_owned()),
-            BearingSpec::Linear(_) => "linear".to_string(),
+        // hil-sim names bearings by their config file stem and knows the thesis oil, the oil of
+        // the bundled bearing files; a linear spring has no lubricant.
+        let (id, lubricant) = match &model.description.bearings[b].spec {
+            BearingSpec::Roller { config, .. } => (
+                config
+                    .file_stem()
+                    .map_or("roller".into(), |s| s.to_string_lossy().into_owned()),
+                "thesis_oil",
+            ),
+            BearingSpec::Linear(_) => ("linear".to_string(), "none"),
         };
         output::write_kinematics_trace(
-            &p,
+            &stage(&p)?,
             &r,
             b,
-            (&id, "thesis_oil"),
+            (&id, lubricant),
             s.dt * s.record_every as f64,
         )
         .with_context(|| format!("writing {}", p.display()))?;
-        let p = with_suffix(&a.out, &format!("_b{b}_rollers.csv"));
-        output::write_roller_csv(&p, &r, b).with_context(|| format!("writing {}", p.display()))?;
+        // A roller record only for a bearing with rollers (write_roller_csv writes nothing
+        // otherwise, and an empty staged file must not be renamed into place).
+        if r.samples.first().is_some_and(|x| x.rollers[b].is_some()) {
+            let p = with_suffix(&a.out, &format!("_b{b}_rollers.csv"));
+            output::write_roller_csv(&stage(&p)?, &r, b)
+                .with_context(|| format!("writing {}", p.display()))?;
+        }
     }
     // Plots for the first bearing (inner race): orbit and spectrum of y.
     let orbit: Vec<[f64; 2]> = r.samples.iter().map(|s| s.probes[0][0]).collect();
@@ -53,7 +71,7 @@ pub(super) fn cmd_run(a: RunArgs) -> Result<()> {
     plots::orbit(
         &orbit,
         &format!("orbit, node {} at {} rpm", r.probe_nodes[0], a.speed_rpm),
-        &orbit_png,
+        &stage(&orbit_png)?,
     )
     .map_err(|e| anyhow::anyhow!("writing {}: {e}", orbit_png.display()))?;
     let y: Vec<f64> = orbit.iter().map(|p| p[1]).collect();
@@ -74,7 +92,7 @@ pub(super) fn cmd_run(a: RunArgs) -> Result<()> {
         &spec,
         &markers,
         &format!("spectrum of y, node {}", r.probe_nodes[0]),
-        &spec_png,
+        &stage(&spec_png)?,
     )
     .map_err(|e| anyhow::anyhow!("writing {}: {e}", spec_png.display()))?;
     let mut plotted = vec![
@@ -95,7 +113,7 @@ pub(super) fn cmd_run(a: RunArgs) -> Result<()> {
             &orders,
             f_max.min(0.5 / sample_dt),
             &format!("waterfall of y, node {}", r.probe_nodes[0]),
-            &png,
+            &stage(&png)?,
         )
         .map_err(|e| anyhow::anyhow!("writing {}: {e}", png.display()))?;
         plotted.push(png.display().to_string());
@@ -105,6 +123,7 @@ pub(super) fn cmd_run(a: RunArgs) -> Result<()> {
         None => serde_json::Value::Null,
         Some(k) => reduction_report(&model, &s, k, a.compare_full, &r)?,
     };
+    files.commit()?;
     let summary = serde_json::json!({
         "speed_rpm": a.speed_rpm, "speed_end_rpm": a.speed_end_rpm, "dt_s": s.dt, "steps": r.steps, "n_dof": r.n_dof,
         "wall_seconds": r.wall_seconds, "bearing_seconds": r.bearing_seconds,

@@ -3,7 +3,8 @@
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use anyhow::{bail, Result};
+use anyhow::{bail, Context, Result};
+use bearing_host_common::output::OutputFiles;
 use bearing_shaft::bearing::{BearingSpec, FilmKind};
 use bearing_shaft::plots;
 use bearing_shaft::sweep::{hub_motor_speeds_rpm, sweep};
@@ -52,7 +53,14 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
         bar.inc(1);
     })?;
     bar.finish_and_clear();
-    plots::envelopes(&points, &a.plot)
+    // The three plots or none: staged under temporary names, renamed at the end.
+    let mut files = OutputFiles::new();
+    let mut stage = |path: &std::path::Path| {
+        files
+            .stage(path)
+            .with_context(|| format!("writing {}", path.display()))
+    };
+    plots::envelopes(&points, &stage(&a.plot)?)
         .map_err(|e| anyhow::anyhow!("writing {}: {e}", a.plot.display()))?;
     let orders = spectrum_orders(&model, 1.0)?;
     let top_hz = top / 60.0;
@@ -76,11 +84,12 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
             &orders,
             f_max.min(highest_nyquist),
             &format!("inner-race y displacement, bearing 0, {name}"),
-            &png,
+            &stage(&png)?,
         )
         .map_err(|e| anyhow::anyhow!("writing {}: {e}", png.display()))?;
         waterfalls.push(png.display().to_string());
     }
+    files.commit()?;
     let mesh = mesh_orders(&model)
         .into_iter()
         .fold(None, |m: Option<f64>, o| Some(m.map_or(o, |m| m.max(o))));
