@@ -119,6 +119,17 @@ impl CaseArgs {
         }
     }
 
+    /// The flags that set the case (for messages).
+    fn flags(&self) -> &'static str {
+        if self.m.is_some() || self.l.is_some() {
+            "--m, --l"
+        } else if self.w.is_some() || self.u.is_some() || self.g.is_some() {
+            "--w, --u, --g"
+        } else {
+            "--load/--length, --entrainment, --radius, --modulus, --alpha, --eta0"
+        }
+    }
+
     fn case(&self) -> Result<ContactCase> {
         let si = [
             ("--load", self.load),
@@ -174,7 +185,7 @@ fn solve(a: SolveArgs) -> Result<()> {
     let result = a
         .case
         .case()
-        .and_then(|c| ehl::solve(&c, &a.case.options()).map_err(|e| anyhow::anyhow!("{e}")));
+        .and_then(|c| super::ehl_trust::solve(&c, &a.case.options(), a.case.flags()));
     let sol = match result {
         Ok(s) => s,
         Err(e) => {
@@ -198,6 +209,7 @@ fn solve(a: SolveArgs) -> Result<()> {
     if a.json {
         let v = serde_json::json!({
             "converged": true,
+            "grid_error_estimate": sol.grid_error_estimate,
             "central_film_m": sol.central_film_m,
             "min_film_m": sol.min_film_m,
             "central_film_raw_m": sol.central_film_raw_m,
@@ -262,6 +274,14 @@ fn print_solution(s: &EhlSolution) {
         s.max_pressure_x
     );
     println!("  film exit              x/b = {:.4}", s.exit_x);
+    if let Some(e) = &s.grid_error_estimate {
+        println!(
+            "  grid error (estimated) h_c {:.3} %, h_min {:.3} % on this grid (from {} nodes)",
+            100.0 * e.central_film,
+            100.0 * e.min_film,
+            e.other_nodes
+        );
+    }
     println!(
         "  Moes h_c / Pan–Hamrock h_c, h_min: {:.4} / {:.4}, {:.4} µm",
         ehl::formulas::moes_central_film_m(c) * 1e6,
