@@ -6,6 +6,12 @@
 //! regularised by a small multiple of the nominal roller stiffness and each step is limited to
 //! one micrometre-scale trust length; both vanish from the converged answer, which is
 //! judged on the force residual alone. Not for the real-time loop: it stops when converged.
+//!
+//! The residual is a sum of f32 roller forces, so it cannot be resolved finer than a small
+//! fraction of the sum of the roller loads Σ|Q_j|, and that sum is not zero at zero applied
+//! load: a film or an interference preloads every roller (docs/physics.md §6.2: the hub-motor
+//! bearing carries Σ|Q_j| ≈ 2.5 kN dry and ≈ 25 kN at 14 000 rpm with no load at all). The
+//! tolerance is therefore relative to the larger of |F_applied| and Σ|Q_j|.
 
 use super::{Bearing, BearingOutput};
 use crate::params::OperatingState;
@@ -19,7 +25,7 @@ pub struct Equilibrium {
     pub residual_n: f32,
     /// Newton iterations used.
     pub iterations: usize,
-    /// Residual ≤ tolerance·|F_applied| reached.
+    /// Residual ≤ tolerance·max(|F_applied|, Σ|Q_j|) reached.
     pub converged: bool,
 }
 
@@ -30,7 +36,8 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     /// Solve for the displacement at which the bearing carries `applied_force_n` [F_x, F_y] (N)
     /// acting on the inner race, with the bearing's film model, at the speed of `state` (its
     /// displacement is the start) and the committed cage angle. Stops when the force residual
-    /// is below `relative_tolerance·|F|` or after `max_iterations`; a refused state stops it
+    /// is below `relative_tolerance·max(|F|, Σ|Q_j|)` (Σ|Q_j|: the sum of the roller loads of
+    /// the iterate, 10⁻³ N at least) or after `max_iterations`; a refused state stops it
     /// unconverged. It commits the warm start of its last iterate.
     pub fn static_equilibrium(
         &mut self,
@@ -42,7 +49,6 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         let magnitude = crate::math::sqrt(
             applied_force_n[0] * applied_force_n[0] + applied_force_n[1] * applied_force_n[1],
         );
-        let tolerance = relative_tolerance * magnitude.max(1.0e-3);
         let nominal = self.roller.nominal_coefficient() * crate::math::pow(1.0e-6, 1.0 / 9.0);
         let regularisation = 1.0e-3 * nominal;
         let mut s = *state;
@@ -69,6 +75,11 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             result.displacement_m = s.displacement_m;
             result.residual_n = crate::math::sqrt(rx * rx + ry * ry);
             result.iterations = iteration;
+            let roller_load_sum_n = out
+                .rollers
+                .iter()
+                .fold(0.0f32, |sum, r| sum + r.load_n.abs());
+            let tolerance = relative_tolerance * magnitude.max(roller_load_sum_n).max(1.0e-3);
             if result.residual_n <= tolerance {
                 result.converged = true;
                 return result;

@@ -7,7 +7,7 @@
 //! differences are not monotone (p undefined, convergence already at round-off), the formal
 //! order p = 2 of the scheme is used.
 
-use super::{ContactCase, EhlError, EhlSolution, Solver, SolverOptions};
+use super::{ContactCase, EhlError, EhlSolution, GridErrorEstimate, Solver, SolverOptions};
 
 /// One quantity on the three grids and its extrapolation.
 #[derive(Debug, Clone, Copy, serde::Serialize)]
@@ -91,9 +91,65 @@ pub fn study(case: &ContactCase, opts: &SolverOptions) -> Result<ConvergenceStud
     })
 }
 
+/// The grid error of `sol` (solved with `opts`): its own estimate from the grid sequence when
+/// it has one, else from a solve on the grid with every spacing halved (2N−1 nodes, started
+/// from `sol`; N ≤ 4097).
+pub fn grid_error_estimate(
+    sol: &EhlSolution,
+    opts: &SolverOptions,
+) -> Result<GridErrorEstimate, EhlError> {
+    if let Some(e) = sol.grid_error_estimate {
+        return Ok(e);
+    }
+    let fine_opts = SolverOptions {
+        nodes: 2 * (sol.nodes - 1) + 1,
+        adaptive: false,
+        ..*opts
+    };
+    let fine = Solver::new(fine_opts)?.solve_from(&sol.case, sol)?;
+    Ok(GridErrorEstimate::from_double_grid(
+        (sol.central_film_raw_m, sol.min_film_raw_m),
+        (fine.central_film_raw_m, fine.min_film_raw_m),
+        fine.nodes,
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The coarse Moes case M = 30, L = 5 on 41 nodes (no grid sequence below it): the estimate
+    /// from the 81-node solve brackets its true error against the three-grid extrapolation
+    /// (401/801/1601 nodes) within a factor 2, and it is large (tens of %).
+    #[test]
+    fn coarse_grid_error_is_estimated() {
+        let case = ContactCase::from_moes(30.0, 5.0).unwrap();
+        let opts = SolverOptions {
+            nodes: 41,
+            ..Default::default()
+        };
+        let sol = crate::solve(&case, &opts).unwrap();
+        assert!(sol.grid_error_estimate.is_none());
+        let e = grid_error_estimate(&sol, &opts).unwrap();
+        assert_eq!(e.other_nodes, 81);
+        let reference = study(
+            &case,
+            &SolverOptions {
+                nodes: 401,
+                adaptive: false,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let true_error =
+            (sol.central_film_raw_m / reference.central_film_m.extrapolated - 1.0).abs();
+        assert!(
+            e.central_film > 0.5 * true_error && e.central_film < 2.0 * true_error,
+            "estimate {} vs {true_error}",
+            e.central_film
+        );
+        assert!(e.largest() > 0.1, "{e:?}");
+    }
 
     /// Richardson on an exactly second-order sequence f = 1 + h² recovers p = 2 and f* = 1.
     #[test]

@@ -213,7 +213,7 @@ impl Solver {
                 }
             }
         }
-        if !report.converged || !self.opts.richardson {
+        if !report.converged {
             coarse = None;
         }
         self.finish(case, report, iterations, t0, coarse, result_level)

@@ -37,6 +37,7 @@
 pub mod case;
 pub mod compare;
 pub mod convergence;
+pub mod domain;
 pub mod driver;
 pub mod formulas;
 pub mod grid;
@@ -51,7 +52,7 @@ mod tests_reference;
 pub use case::ContactCase;
 pub use driver::Solver;
 pub use rheology::ViscosityLaw;
-pub use solution::{EhlSolution, Profile};
+pub use solution::{EhlSolution, GridErrorEstimate, Profile};
 
 use grid::GridSpec;
 
@@ -64,6 +65,17 @@ pub enum EhlError {
         field: &'static str,
         value: f64,
         allowed: String,
+    },
+    /// The case lies outside the domain where the solver's model (Reynolds' thin-film
+    /// equation on a parabolic gap, continuum lubricant, fully flooded inlet) holds.
+    #[error(
+        "{quantity} = {value:.3e} is outside the model's domain: allowed {allowed} ({reason})"
+    )]
+    OutsideModel {
+        quantity: &'static str,
+        value: f64,
+        allowed: String,
+        reason: &'static str,
     },
     /// A solver option is out of range.
     #[error("invalid option {field}: {message}")]

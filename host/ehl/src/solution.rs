@@ -13,6 +13,47 @@ pub struct Profile {
     pub film: Vec<f64>,
 }
 
+/// Estimated relative grid error of the raw films on the result grid: |f − f′|/(3f) from the
+/// solution f′ on the grid with every spacing doubled, the formal order 2 of the scheme
+/// (Roache 1998 §5.4; the refinement study of [`super::convergence`] measures p ≈ 1.8–2.1).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct GridErrorEstimate {
+    /// Of h_c.
+    pub central_film: f64,
+    /// Of h_min.
+    pub min_film: f64,
+    /// Node count of the other grid the estimate comes from.
+    pub other_nodes: usize,
+}
+
+impl GridErrorEstimate {
+    /// From the films (h_c, h_min) on the result grid and on the half-resolution grid.
+    pub fn from_half_grid(fine: (f64, f64), half: (f64, f64), half_nodes: usize) -> Self {
+        let relative = |f: f64, g: f64| ((f - g) / f).abs() / 3.0;
+        Self {
+            central_film: relative(fine.0, half.0),
+            min_film: relative(fine.1, half.1),
+            other_nodes: half_nodes,
+        }
+    }
+
+    /// From the films (h_c, h_min) on the result grid and on the grid with every spacing
+    /// halved: with f − f* ≈ C h², f − f_fine ≈ ¾ C h², so f's error is ⁴⁄₃ |f − f_fine|.
+    pub fn from_double_grid(result: (f64, f64), fine: (f64, f64), fine_nodes: usize) -> Self {
+        let relative = |f: f64, g: f64| 4.0 * ((f - g) / f).abs() / 3.0;
+        Self {
+            central_film: relative(result.0, fine.0),
+            min_film: relative(result.1, fine.1),
+            other_nodes: fine_nodes,
+        }
+    }
+
+    /// The larger of the two.
+    pub fn largest(&self) -> f64 {
+        self.central_film.max(self.min_film)
+    }
+}
+
 /// Result of a converged solve (SI unless stated).
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct EhlSolution {
@@ -30,6 +71,11 @@ pub struct EhlSolution {
     pub min_film_raw_m: f64,
     /// Whether h_c and h_min are Richardson-extrapolated (f + (f − f_½)/3, formal order 2).
     pub richardson: bool,
+    /// Grid error of the raw films when the grid sequence reached the result grid from the
+    /// half-resolution level (None otherwise: the result is the coarsest level, or that level
+    /// was solved afresh; [`super::convergence::grid_error_estimate`] then solves the 2N−1
+    /// grid for it).
+    pub grid_error_estimate: Option<GridErrorEstimate>,
     /// Where h_min sits, in units of b (X = x/b).
     pub min_film_x: f64,
     /// Maximum pressure (the outlet spike at high load), Pa.
@@ -81,13 +127,17 @@ impl EhlSolution {
         if hc < hmin {
             (xmin, hmin) = (0.0, hc);
         }
+        let grid_error_estimate = coarse
+            .map(|half| GridErrorEstimate::from_half_grid((hc, hmin), half, (x.len() - 1) / 2 + 1));
         // Richardson with the formal order 2 of the scheme (the refinement study measures
         // p ≈ 1.8–2.1), only when the two grids agree to 30 % (asymptotic range).
-        let extrapolated = coarse.and_then(|(hc_half, hmin_half)| {
-            let ok = |f: f64, g: f64| g > 0.0 && ((f - g) / f).abs() < 0.3;
-            (ok(hc, hc_half) && ok(hmin, hmin_half))
-                .then(|| (hc + (hc - hc_half) / 3.0, hmin + (hmin - hmin_half) / 3.0))
-        });
+        let extrapolated = coarse
+            .filter(|_| opts.richardson)
+            .and_then(|(hc_half, hmin_half)| {
+                let ok = |f: f64, g: f64| g > 0.0 && ((f - g) / f).abs() < 0.3;
+                (ok(hc, hc_half) && ok(hmin, hmin_half))
+                    .then(|| (hc + (hc - hc_half) / 3.0, hmin + (hmin - hmin_half) / 3.0))
+            });
         let (hc_out, hmin_out) = extrapolated.unwrap_or((hc, hmin));
         let (mut imax, mut pmax) = (0, f64::NEG_INFINITY);
         for (i, &v) in p.iter().enumerate() {
@@ -106,6 +156,7 @@ impl EhlSolution {
             central_film_raw_m: hc * scale,
             min_film_raw_m: hmin * scale,
             richardson: extrapolated.is_some(),
+            grid_error_estimate,
             min_film_x: xmin,
             max_pressure_pa: pmax * ph,
             max_pressure_x: x[imax],

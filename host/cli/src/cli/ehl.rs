@@ -120,6 +120,17 @@ impl CaseArgs {
         }
     }
 
+    /// The flags that set the case (for messages).
+    fn flags(&self) -> &'static str {
+        if self.m.is_some() || self.l.is_some() {
+            "--m, --l"
+        } else if self.w.is_some() || self.u.is_some() || self.g.is_some() {
+            "--w, --u, --g"
+        } else {
+            "--load/--length, --entrainment, --radius, --modulus, --alpha, --eta0"
+        }
+    }
+
     fn case(&self) -> Result<ContactCase> {
         let si = [
             ("--load", self.load),
@@ -215,7 +226,10 @@ fn name_flags(error: EhlError, direct: &[&str], given: &str) -> anyhow::Error {
             Some(flag) => anyhow::anyhow!("{flag}: {message}"),
             None => anyhow::anyhow!("{error}"),
         },
-        EhlError::NotConverged { .. } => anyhow::anyhow!("{error}"),
+        // Names a derived quantity (h_c/R, …); the caller adds the flags that set the case.
+        EhlError::OutsideModel { .. } | EhlError::NotConverged { .. } => {
+            anyhow::anyhow!("{error}")
+        }
     }
 }
 
@@ -230,7 +244,9 @@ pub fn run(args: EhlArgs) -> Result<()> {
 
 fn solve(a: SolveArgs) -> Result<()> {
     let result = a.case.case().and_then(|c| {
-        ehl::solve(&c, &a.case.options()).map_err(|e| name_flags(e, &[], "the case"))
+        super::ehl_trust::solve(&c, &a.case.options(), a.case.flags(), |e| {
+            name_flags(e, &[], "the case")
+        })
     });
     let sol = match result {
         Ok(s) => s,
@@ -264,6 +280,7 @@ fn solve(a: SolveArgs) -> Result<()> {
     if a.json {
         let v = serde_json::json!({
             "converged": true,
+            "grid_error_estimate": sol.grid_error_estimate,
             "central_film_m": sol.central_film_m,
             "min_film_m": sol.min_film_m,
             "central_film_raw_m": sol.central_film_raw_m,
@@ -328,6 +345,14 @@ fn print_solution(s: &EhlSolution) {
         s.max_pressure_x
     );
     println!("  film exit              x/b = {:.4}", s.exit_x);
+    if let Some(e) = &s.grid_error_estimate {
+        println!(
+            "  grid error (estimated) h_c {:.3} %, h_min {:.3} % on this grid (from {} nodes)",
+            100.0 * e.central_film,
+            100.0 * e.min_film,
+            e.other_nodes
+        );
+    }
     println!(
         "  Moes h_c / Pan–Hamrock h_c, h_min: {:.4} / {:.4}, {:.4} µm",
         ehl::formulas::moes_central_film_m(c) * 1e6,

@@ -5,6 +5,7 @@ pub mod dataset;
 pub mod ehl;
 pub mod ehl_compare;
 pub mod ehl_plot;
+mod ehl_trust;
 pub mod export;
 pub mod film;
 mod film_plot;

@@ -32,7 +32,9 @@ pub struct StaticArgs {
     pub json: bool,
 }
 
-/// Relative force residual at which the equilibrium is accepted.
+/// Force residual at which the equilibrium is accepted, relative to the larger of the radial
+/// load and the sum of the roller loads (the film and an interference preload the rollers at
+/// zero load; see `Bearing::static_equilibrium`).
 const TOLERANCE: f32 = 1.0e-6;
 /// Newton iterations allowed.
 const MAX_ITERATIONS: usize = 300;
@@ -54,7 +56,7 @@ fn solve(bearing: &mut dyn DynBearing, load_n: f32, speed: f32) -> anyhow::Resul
     let eq = bearing.static_equilibrium(force, &start, TOLERANCE, MAX_ITERATIONS);
     if !eq.converged {
         bail!(
-            "{} equilibrium not reached after {} Newton iterations: force residual {:.3e} N (tolerance {:.1e}·F)",
+            "{} equilibrium not reached after {} Newton iterations: force residual {:.3e} N (tolerance {:.1e}·max(F, Σ roller loads))",
             if lubricated { "lubricated" } else { "dry" },
             eq.iterations,
             eq.residual_n,

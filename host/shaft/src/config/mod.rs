@@ -49,6 +49,7 @@ mod describe;
 mod locator;
 
 use describe::describe;
+pub use describe::MAX_ELEMENT_LENGTH_RATIO;
 use locator::Locator;
 
 /// A configuration error with its location.

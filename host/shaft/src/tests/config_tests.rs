@@ -236,3 +236,56 @@ fn roller_bearing_films() {
         "network {int} N vs dry {dry} N"
     );
 }
+
+/// configs/friswell_5_9_1.toml with its last element (1.25 … 1.5 m) split at 1.5 m − `short_m`:
+/// the same rotor, meshed with one element of length `short_m`.
+fn friswell_with_short_element(short_m: f64) -> String {
+    let text = std::fs::read_to_string(configs().join("friswell_5_9_1.toml")).unwrap();
+    let nodes = "nodes_m = [0.0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5]";
+    assert!(text.contains(nodes));
+    text.replace(
+        nodes,
+        &format!(
+            "nodes_m = [0.0, 0.25, 0.5, 0.75, 1.0, 1.25, {}, 1.5]",
+            1.5 - short_m
+        ),
+    )
+    .replace("to_node = 6", "to_node = 7")
+    .replace("node = 6\n", "node = 7\n")
+}
+
+/// A 1 µm or 1 nm element (2.5·10⁵ and 2.5·10⁸ times shorter than the others) is refused on
+/// the nodes_m line; just inside the allowed ratio (100: a 2.5 mm element) the rotor keeps the
+/// frequencies of the uniform mesh (Friswell et al. (2010) Example 5.9.1 at 4000 rpm).
+#[test]
+fn ill_conditioned_meshes_are_refused_and_the_allowed_ratio_solves_correctly() {
+    for short_m in [1e-6, 1e-9] {
+        let text = friswell_with_short_element(short_m);
+        let e = parse_model(Path::new("x/shaft.toml"), &text)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("x/shaft.toml:7: nodes_m:") && e.contains("within a factor 100"),
+            "{short_m}: {e}"
+        );
+    }
+    let omega = 4000.0 * std::f64::consts::PI / 30.0;
+    let uniform = load_model(&configs().join("friswell_5_9_1.toml")).unwrap();
+    let (_, reference) = operating_modes(&uniform, omega, 5, false).unwrap();
+    // Just inside the allowed ratio (1 % longer than 1/100 of the 0.25 m elements).
+    let short_m = 1.01 * 0.25 / crate::config::MAX_ELEMENT_LENGTH_RATIO;
+    let split = parse_model(
+        Path::new("x/shaft.toml"),
+        &friswell_with_short_element(short_m),
+    )
+    .unwrap();
+    let (_, modes) = operating_modes(&split, omega, 5, false).unwrap();
+    for (m, r) in modes.iter().zip(&reference) {
+        assert!(
+            (m.frequency / r.frequency - 1.0).abs() < 1e-4,
+            "{} vs {} rad/s",
+            m.frequency,
+            r.frequency
+        );
+    }
+}

@@ -10,3 +10,4 @@ mod modes_tests;
 mod ramp_tests;
 mod response_tests;
 mod rig_tests;
+mod statics_tests;
