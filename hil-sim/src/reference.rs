@@ -47,6 +47,8 @@ const FIRST_BRACKET: f64 = 0.02;
 /// The numerical reference for one bearing.
 pub struct NumericalReference {
     params: BearingParams,
+    /// The roller law of `params`, built once.
+    slices: Slices,
     /// One solver per worker thread (a solver owns its grids and work storage).
     solvers: Vec<Solver>,
 }
@@ -139,7 +141,11 @@ impl NumericalReference {
         let solvers = (0..threads)
             .map(|_| Solver::new(SolverOptions::default()).map_err(|e| e.to_string()))
             .collect::<Result<_, _>>()?;
-        Ok(Self { params, solvers })
+        Ok(Self {
+            slices: Slices::new(&params),
+            params,
+            solvers,
+        })
     }
 
     /// Hertz pressure of the inner contact at load `load_n` (Pa), the more loaded one.
@@ -159,14 +165,13 @@ impl NumericalReference {
         cases: &[(usize, RollerCase)],
         speed_rad_s: f32,
     ) -> Result<Vec<(usize, RollerSolution)>, String> {
-        let params = &self.params;
-        let slices = Slices::new(params);
+        let (params, slices) = (&self.params, &self.slices);
         let next = AtomicUsize::new(0);
         let solved = Mutex::new(Vec::with_capacity(cases.len()));
         let first_error = Mutex::new(None);
         std::thread::scope(|scope| {
             for solver in self.solvers.iter_mut().take(cases.len().max(1)) {
-                let (slices, next, solved, first_error) = (&slices, &next, &solved, &first_error);
+                let (next, solved, first_error) = (&next, &solved, &first_error);
                 scope.spawn(move || {
                     while let Some(&(j, case)) = cases.get(next.fetch_add(1, Ordering::Relaxed)) {
                         match couple(solver, params, slices, j, case, speed_rad_s) {
@@ -368,7 +373,7 @@ impl AccuracyReference for NumericalReference {
                 *slot = Some(solution);
             }
         }
-        let slices = Slices::new(&self.params);
+        let slices = &self.slices;
         for (j, ((s, c), case)) in rollers.iter().enumerate() {
             let (load, stiffness) = match solved.get(j).copied().flatten() {
                 Some(r) => {
