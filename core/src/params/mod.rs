@@ -14,5 +14,5 @@ pub use design::BearingDesign;
 pub use geometry::{BearingGeometry, Crown};
 pub use lubricant::Lubricant;
 pub use material::{reduced_modulus, Material};
-pub use operating::{OperatingState, MAX_SHAFT_SPEED_RAD_S};
-pub(crate) use operating::{MAX_CAGE_ANGLE_RAD, MAX_TILT_RAD, MAX_TIME_STEP_S};
+pub use operating::{OperatingState, MAX_SHAFT_SPEED_RAD_S, MAX_TIME_STEP_S};
+pub(crate) use operating::{MAX_CAGE_ANGLE_RAD, MAX_TILT_RAD};

@@ -10,10 +10,10 @@ use crate::variables::{
     FIRST_OUTPUT, FIRST_PARAMETER, INPUTS, INTEGERS, PARAMETERS, REALS,
 };
 
-/// The largest time step the core's `advance` accepts (s; its `time_step_s` range). A
-/// communication step longer than this is taken in equal sub-steps no longer than it (a test
-/// checks the bound against the core's refusal).
-pub const CORE_MAX_STEP_S: f64 = 1.0;
+/// The largest time step the core's `advance` accepts (s; its `time_step_s` range,
+/// [`bearing_core::params::MAX_TIME_STEP_S`]). A communication step longer than this is taken in
+/// equal sub-steps no longer than it (a test checks the bound against the core's refusal).
+pub const CORE_MAX_STEP_S: f64 = bearing_core::params::MAX_TIME_STEP_S as f64;
 /// The longest communication step accepted (s): at most this many sub-steps of
 /// [`CORE_MAX_STEP_S`], ≈ 4 ms of work on the host.
 pub const MAX_COMMUNICATION_STEP_S: f64 = 3600.0;
