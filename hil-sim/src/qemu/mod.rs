@@ -13,6 +13,7 @@ pub mod tools;
 
 use crate::kernel::FilmKind;
 use crate::trace::{binary, Trace, ValidationOptions};
+use bearing_host_common::output::write_file;
 use serde::Serialize;
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -256,16 +257,16 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
     let dir = &options.report_dir;
     std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
     let bytes = binary::encode(&trace).map_err(|e| e.to_string())?;
-    std::fs::write(dir.join("trace.bin"), bytes).map_err(|e| format!("writing trace.bin: {e}"))?;
-    std::fs::write(dir.join("film.txt"), options.film.name())
-        .map_err(|e| format!("writing film.txt: {e}"))?;
+    write_file(&dir.join("trace.bin"), bytes).map_err(|e| e.to_string())?;
+    write_file(&dir.join("film.txt"), options.film.name()).map_err(|e| e.to_string())?;
     let _ = std::fs::remove_file(dir.join("outputs.bin"));
     let _ = std::fs::remove_file(dir.join("profile.csv"));
 
     let started = Instant::now();
     let (code, log) = run_qemu(&elf, dir, options.timeout)?;
     let qemu_wall_s = started.elapsed().as_secs_f64();
-    let _ = std::fs::write(dir.join("log.defmt"), &log);
+    // The raw log is a diagnostic copy: a failure to keep it does not fail the run.
+    let _ = write_file(&dir.join("log.defmt"), &log);
     let decoded = decode_log(&elf, &log);
     match code {
         Some(0) => {}
@@ -364,9 +365,9 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
     for (index, c) in firmware.counts.iter().enumerate() {
         csv.push_str(&format!("{index},{},{}\n", c.instructions, c.systick));
     }
-    let _ = std::fs::write(dir.join("instructions.csv"), csv);
-    if let Ok(json) = serde_json::to_string_pretty(&report) {
-        let _ = std::fs::write(dir.join("qemu.json"), json);
-    }
+    // Both written whole or not at all: a reader never finds a half-written report.
+    let json = serde_json::to_string_pretty(&report).map_err(|e| format!("qemu.json: {e}"))?;
+    write_file(&dir.join("instructions.csv"), csv).map_err(|e| e.to_string())?;
+    write_file(&dir.join("qemu.json"), json).map_err(|e| e.to_string())?;
     Ok(report)
 }

@@ -81,7 +81,7 @@ pub const MAX_HERTZ_PRESSURE_PA: f64 = 4.0e9;
 
 /// Highest shaft speed `--speed-rpm` accepts (rpm): the core's limit
 /// [`bearing_core::params::MAX_SHAFT_SPEED_RAD_S`], ≈ 954 930 rpm.
-fn max_speed_rpm() -> f64 {
+pub(crate) fn max_speed_rpm() -> f64 {
     f64::from(bearing_core::params::MAX_SHAFT_SPEED_RAD_S) * 30.0 / std::f64::consts::PI
 }
 
@@ -112,7 +112,7 @@ fn hertz_pressure_pa(w: f64, radius_m: f64, modulus_pa: f64) -> f64 {
 }
 
 /// The load (N) over `length_m` at which p_h reaches [`MAX_HERTZ_PRESSURE_PA`].
-fn max_load_n(length_m: f64, radius_m: f64, modulus_pa: f64) -> f64 {
+pub(crate) fn max_load_n(length_m: f64, radius_m: f64, modulus_pa: f64) -> f64 {
     2.0 * std::f64::consts::PI * radius_m * MAX_HERTZ_PRESSURE_PA.powi(2) / modulus_pa * length_m
 }
 

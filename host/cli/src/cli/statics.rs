@@ -9,6 +9,7 @@ use clap::Args;
 use serde_json::json;
 
 use super::common::{non_negative, print_json, rad_per_s};
+use super::film::{max_load_n, max_speed_rpm, MAX_HERTZ_PRESSURE_PA};
 use bearing_host_common::config::BearingConfig;
 use bearing_host_common::rolling::{boxed, StepSnapshot};
 
@@ -38,6 +39,51 @@ pub struct StaticArgs {
 const TOLERANCE: f32 = 1.0e-6;
 /// Newton iterations allowed.
 const MAX_ITERATIONS: usize = 300;
+
+/// Ratio of the radial load to the most loaded roller's load that ISO 76 assumes for a radial
+/// roller bearing in its static load rating (Stribeck's constant with a normal clearance: the
+/// standard's 44 N/mm² is 4 GPa at the inner contact of a steel roller divided by 5).
+const ISO_76_LOAD_SHARING: f64 = 5.0;
+
+/// The bearing's static load rating C₀ in the sense of ISO 76 (N): the radial load at which the
+/// most loaded roller's inner contact reaches [`MAX_HERTZ_PRESSURE_PA`], with that roller
+/// carrying 5/Z of the load. For steel it is ISO 76's C₀r = 44·(1 − D/d_m)·Z·L·D (N, mm) within
+/// 1 %. Above it the steel yields and no model here holds.
+fn static_load_rating_n(params: &bearing_core::BearingParams) -> f64 {
+    let inner = params.contact_input(false, 0.0, 0.0);
+    let per_roller = max_load_n(
+        f64::from(inner.length_m),
+        f64::from(inner.reduced_radius_m),
+        f64::from(inner.reduced_modulus_pa),
+    );
+    f64::from(params.geometry().roller_count()) * per_roller / ISO_76_LOAD_SHARING
+}
+
+/// Refuses a radial load above the static load rating or a speed above the core's, naming where
+/// the value came from (`source`: the flag, or the config's field).
+fn check_case(
+    params: &bearing_core::BearingParams,
+    (load_n, load_source): (f64, &str),
+    (speed_rpm, speed_source): (f64, &str),
+) -> anyhow::Result<()> {
+    let rating = static_load_rating_n(params);
+    if load_n > rating {
+        bail!(
+            "{load_source} = {load_n:e} N is out of range: allowed 0 ..= {rating:.4e} N, this \
+             bearing's static load rating (ISO 76: {} GPa at the most loaded contact, where the \
+             steel starts to yield)",
+            MAX_HERTZ_PRESSURE_PA * 1e-9
+        );
+    }
+    if speed_rpm > max_speed_rpm() {
+        bail!(
+            "{speed_source} = {speed_rpm:e} rpm is out of range: allowed 0 ..= {:.0} rpm (the \
+             core's highest shaft speed, 10⁵ rad/s)",
+            max_speed_rpm()
+        );
+    }
+    Ok(())
+}
 
 struct Solution {
     displacement_m: [f32; 2],
@@ -151,6 +197,16 @@ pub fn run(args: StaticArgs) -> anyhow::Result<()> {
         .speed_rpm
         .or(config.case.speed_rpm.map(f64::from))
         .unwrap_or(0.0);
+    let from_config = |field: &str| format!("{} [case] {field}", args.config.display());
+    let load_source = match args.radial_load {
+        Some(_) => "--radial-load".to_string(),
+        None => from_config("radial_load_n"),
+    };
+    let speed_source = match args.speed_rpm {
+        Some(_) => "--speed-rpm".to_string(),
+        None => from_config("speed_rpm"),
+    };
+    check_case(&params, (load, &load_source), (rpm.abs(), &speed_source))?;
     let speed = rad_per_s(rpm);
     let lubricated = rpm > 0.0;
     let build =

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
 use bearing_core::film::{ann, FilmModel, FilmSource};
-use bearing_host_common::output::OutputFiles;
+use bearing_host_common::output::{write_with, OutputFiles};
 use bearing_train::ann::export::fingerprint;
 use bearing_train::ann::features::{InputSet, TargetForm};
 use bearing_train::ann::metrics::Metrics;
@@ -213,7 +213,7 @@ fn train_one(args: TrainOne) -> Result<()> {
         args.weight_bits,
         command,
     )?;
-    model.save(&out)?;
+    write_with(&out, |temp| model.save(temp))?;
     if args.json {
         println!("{}", serde_json::to_string_pretty(&model.test)?);
     } else {
@@ -326,7 +326,7 @@ fn evaluate(args: EvaluateArgs) -> Result<()> {
     print_metrics("regression (DT / DH)", &model.test.regression);
     if args.write {
         model.test.core = Some(report);
-        model.save(&args.model)?;
+        write_with(&args.model, |temp| model.save(temp))?;
     }
     Ok(())
 }

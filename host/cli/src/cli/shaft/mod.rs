@@ -273,6 +273,15 @@ fn settings(model: &RotorModel, t: &TimeArgs, omega: f64) -> Result<RunSettings>
     }
     let settle = check("settle", t.settle, 0.0, 100.0, false)?;
     let duration = check("duration", t.duration, 0.0, 100.0, true)?;
+    let record_every = check_count("record-every", t.record_every, 1, 1_000_000)?;
+    // A recording needs two samples to have a spectrum, an orbit or a peak-to-peak value.
+    let shortest = 2.0 * dt * record_every as f64;
+    if duration < shortest {
+        bail!(
+            "--duration = {duration:e} s records fewer than two samples: allowed {shortest:e} ..= 100 s \
+             (two samples of --record-every {record_every} steps of --dt {dt:e} s)"
+        );
+    }
     let steps = (settle + duration) / dt;
     if steps > 5e7 {
         bail!("--settle + --duration over --dt gives {steps:.3e} steps: at most 5e7 allowed");
@@ -283,7 +292,7 @@ fn settings(model: &RotorModel, t: &TimeArgs, omega: f64) -> Result<RunSettings>
         dt,
         settle_time: settle,
         record_time: duration,
-        record_every: check_count("record-every", t.record_every, 1, 1_000_000)?,
+        record_every,
         scheme,
         reduction_modes: t.reduce,
         newton: NewtonSettings {
