@@ -65,6 +65,11 @@ pub struct ReplayArgs {
     /// explains (0: no probe).
     #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
     pub pause_probe_s: f64,
+    /// Fail a missed timing budget even when the machine's measured pauses alone explain the
+    /// steps over it (without this flag such a run leaves the budget "not judged" and exits 0
+    /// if the accuracy passed: the model's steps cannot be told from the machine's pauses).
+    #[arg(long)]
+    pub strict_timing: bool,
 }
 
 /// Whether the timed loop runs under real-time scheduling.
@@ -134,6 +139,7 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
         realtime,
         realtime_fallback: args.realtime == RealtimeMode::Auto,
         pause_probe_s,
+        strict_timing: args.strict_timing,
     };
     let points = if args.reference_every == 0 || product.reference.is_none() {
         0
@@ -188,6 +194,9 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
     } else {
         println!("{}", report.markdown());
         println!("report written to {}", args.report.display());
+    }
+    for note in &report.notes {
+        eprintln!("hil-sim replay: {note}");
     }
     if report.passed() {
         Ok(ExitCode::SUCCESS)

@@ -51,6 +51,9 @@ pub struct ReplayConfig {
     /// Spin this long (s) after the timed loop, under its scheduling, measuring the machine's
     /// pauses (`super::pauses`); 0 skips the probe.
     pub pause_probe_s: f64,
+    /// Fail a missed budget even when the machine's pauses alone explain it (`--strict-timing`);
+    /// otherwise such a miss leaves the budget not judged (`ReplayReport::budget_judged`).
+    pub strict_timing: bool,
 }
 
 /// The models a replay drives.
