@@ -535,7 +535,9 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     /// `steps ≥ 1` committing steps with no time passing (the cage angle stays), the first
     /// renewing the whole film table at this speed. [`SETTLE_STEPS`] reach |Δh|/h ≤ 10⁻³
     /// from a cold start (a crowned roller just touching needs four: its first step has no
-    /// power law of its own). The dry model has no warm start: one step.
+    /// power law of its own). The dry model has no warm start: one step. It continues from the
+    /// warm start it finds; after a far jump or hostile inputs, [`Bearing::reset`] first makes
+    /// the result the fresh bearing's, bit for bit (tested in `core/tests/hostile_sequences.rs`).
     pub fn settle(
         &mut self,
         state: &OperatingState,
