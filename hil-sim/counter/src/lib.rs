@@ -16,8 +16,20 @@
 //!   SysTick period.
 //!
 //! Both count virtual time, i.e. instructions, not Cortex-M4 cycles: QEMU is not cycle accurate.
+//!
+//! On QEMU's MPS2 boards (features `mps2-an500`, Cortex-M7, and `mps2-an505`, Cortex-M33),
+//! which have no TIM2, the instruction count is read from the FPGA's free-running COUNTER
+//! register (MPS2 FPGAIO, clocked at the board's SYSCLK: 25 MHz on AN500, 20 MHz on AN505) and
+//! scaled to virtual nanoseconds: exact to one period of that clock (40 or 50 instructions), so
+//! the exact per-step counts on those machines come from QEMU's execution log
+//! (`hil-sim/tools/profile_functions.py`).
 
 #![no_std]
+// On the MPS2 boards TIM2 and its registers are not used.
+#![cfg_attr(
+    any(feature = "mps2-an500", feature = "mps2-an505"),
+    allow(dead_code, unused_imports)
+)]
 
 use core::ptr::{read_volatile, write_volatile};
 use cortex_m::peripheral::syst::SystClkSource;
@@ -25,6 +37,12 @@ use cortex_m::peripheral::SYST;
 
 /// SysTick reload: the largest 24-bit value.
 const SYSTICK_RELOAD: u32 = 0x00FF_FFFF;
+
+/// The FPGAIO COUNTER register of QEMU's MPS2 boards and the instructions (virtual ns) per count.
+#[cfg(feature = "mps2-an500")]
+const FPGAIO_COUNTER: (usize, u32) = (0x4002_8000 + 0x18, 40);
+#[cfg(feature = "mps2-an505")]
+const FPGAIO_COUNTER: (usize, u32) = (0x5030_2000 + 0x18, 50);
 
 /// RCC APB1 peripheral clock enable register (RM0090 §7.3.13), bit 0 enables TIM2.
 const RCC_APB1ENR: usize = 0x4002_3840;
@@ -67,6 +85,13 @@ pub fn start(syst: &mut SYST) {
     syst.clear_current();
     syst.enable_counter();
 
+    #[cfg(not(any(feature = "mps2-an500", feature = "mps2-an505")))]
+    start_tim2();
+}
+
+/// TIM2 free-running at one count per instruction (netduinoplus2).
+#[cfg(not(any(feature = "mps2-an500", feature = "mps2-an505")))]
+fn start_tim2() {
     write_register(RCC_APB1ENR, 1);
     write_register(TIM2 + TIM_PSC, 0);
     write_register(TIM2 + TIM_ARR, u32::MAX);
@@ -78,8 +103,14 @@ pub fn start(syst: &mut SYST) {
 /// Reads both counters.
 #[inline(always)]
 pub fn now() -> Stamp {
+    #[cfg(not(any(feature = "mps2-an500", feature = "mps2-an505")))]
     // SAFETY: TIM2's counter register, see `write_register`; reading it has no side effect.
     let tim2 = unsafe { read_volatile((TIM2 + TIM_CNT) as *const u32) };
+    #[cfg(any(feature = "mps2-an500", feature = "mps2-an505"))]
+    // SAFETY: the FPGAIO COUNTER register of the MPS2 board the firmware is built for; reading
+    // it has no side effect.
+    let tim2 =
+        unsafe { read_volatile(FPGAIO_COUNTER.0 as *const u32) }.wrapping_mul(FPGAIO_COUNTER.1);
     Stamp {
         tim2,
         systick: SYST::get_current(),

@@ -184,6 +184,8 @@ fn run(painted_top: usize) -> Result<(), Failure> {
         .map_err(|_| Failure::OutputIo)?;
     // After the replay and its stack measurement, so that neither sees the profiling.
     profile::write_profile().map_err(|_| Failure::OutputIo)?;
+    #[cfg(feature = "size-table")]
+    profile::write_sizes().map_err(|_| Failure::OutputIo)?;
     Ok(())
 }
 

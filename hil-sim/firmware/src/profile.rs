@@ -128,18 +128,110 @@ pub fn write_profile() -> Result<(), IoError> {
         defmt::info!("profile: {=str}: {=u32} instructions", name, net);
         file.write_all(name.as_bytes())?;
         file.write_all(b",")?;
-        let mut digits = [0u8; 10];
-        let mut at = digits.len();
-        let mut value = net;
-        loop {
-            at -= 1;
-            digits[at] = b'0' + (value % 10) as u8;
-            value /= 10;
-            if value == 0 {
-                break;
-            }
+        write_number(&mut file, net)?;
+        file.write_all(b"\n")?;
+    }
+    Ok(())
+}
+
+/// `value` in decimal digits.
+fn write_number(file: &mut HostFile, value: u32) -> Result<(), IoError> {
+    let mut digits = [0u8; 10];
+    let mut at = digits.len();
+    let mut value = value;
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (value % 10) as u8;
+        value /= 10;
+        if value == 0 {
+            break;
         }
-        file.write_all(&digits[at..])?;
+    }
+    file.write_all(&digits[at..])
+}
+
+/// The instructions of one real-time step (as [`step_cost`]) of a hub-motor-like bearing with
+/// `Z` rollers of `S` slices each: the hub motor's design with 7 mm rollers, so that up to 25
+/// fit its 60 mm pitch circle (the step's work does not depend on the geometry: the same
+/// operations for every input). `u32::MAX` if the core refuses.
+#[cfg(feature = "size-table")]
+#[inline(never)]
+fn sized_step_cost<const Z: usize, const S: usize>(film: FilmKind) -> u32 {
+    let design = bearing_core::BearingDesign {
+        roller_count: Z as u16,
+        roller_diameter_m: 0.007,
+        ..bearing_core::BearingDesign::HUB_MOTOR
+    };
+    let Ok(params) = design.params() else {
+        return u32::MAX;
+    };
+    let Ok(mut bearing) = Bearing::<Z, S>::new(params, film) else {
+        return u32::MAX;
+    };
+    let state = state();
+    if bearing.set_cage_angle(0.3).is_err() || bearing.settle(&state, 3).is_err() {
+        return u32::MAX;
+    }
+    measure(|| {
+        bearing
+            .advance(black_box(&state), 1.0e-4)
+            .map(|o| o.force_n)
+    })
+}
+
+/// Writes `rollers,slices,film,instructions` lines into `sizes.csv`: the step's instructions
+/// for roller counts 8, 12, 17, 21, 25 and 5, 10, 20 slices per roller, integer network and
+/// dry (`hil-sim/tools/size_table.py` builds this with the `size-table` feature and fits the
+/// counts between them). Each size is a step of its own in the image.
+#[cfg(feature = "size-table")]
+pub fn write_sizes() -> Result<(), IoError> {
+    macro_rules! sizes {
+        ($(($z:literal, $s:literal)),*) => {
+            [$(
+                ($z, $s, "int", sized_step_cost::<$z, $s>(FilmKind::Int)),
+                ($z, $s, "dry", sized_step_cost::<$z, $s>(FilmKind::Dry)),
+            )*]
+        };
+    }
+    let empty = measure(|| ());
+    let rows: [(u32, u32, &str, u32); 30] = sizes!(
+        (8, 5),
+        (8, 10),
+        (8, 20),
+        (12, 5),
+        (12, 10),
+        (12, 20),
+        (17, 5),
+        (17, 10),
+        (17, 20),
+        (21, 5),
+        (21, 10),
+        (21, 20),
+        (25, 5),
+        (25, 10),
+        (25, 20)
+    );
+    let mut file = HostFile::open(
+        b"sizes.csv\0",
+        cortex_m_semihosting::nr::open::W_TRUNC_BINARY,
+    )?;
+    file.write_all(b"rollers,slices,film,instructions\n")?;
+    for (rollers, slices, film, count) in rows {
+        let net = count.saturating_sub(empty);
+        defmt::info!(
+            "size table: {=u32} rollers, {=u32} slices, {=str}: {=u32} instructions",
+            rollers,
+            slices,
+            film,
+            net
+        );
+        for value in [rollers, slices] {
+            write_number(&mut file, value)?;
+            file.write_all(b",")?;
+        }
+        file.write_all(film.as_bytes())?;
+        file.write_all(b",")?;
+        write_number(&mut file, net)?;
         file.write_all(b"\n")?;
     }
     Ok(())
