@@ -50,7 +50,7 @@ pub enum KernelFault {
 /// The design of a bearing identifier in a lubricant identifier: the core's preset of
 /// `configs/<bearing>.toml` (docs/physics.md §6). `thesis_oil` (η₀ = 0.08 Pa·s, α = 2.1·10⁻⁸ 1/Pa,
 /// ρ₀ = 833.8 kg/m³, the oil of both reference machines, §6.1, §6.2) is the presets' own;
-/// `thesis_oil_high_speed` is the same oil with the film corrections of [`film_corrections`].
+/// `thesis_oil_hs` is the same oil with the film corrections of [`film_corrections`].
 pub fn design(bearing_id: &str, lubricant_id: &str) -> Result<BearingDesign, KernelError> {
     let design = match bearing_id {
         "hub_motor" => BearingDesign::HUB_MOTOR,
@@ -58,20 +58,20 @@ pub fn design(bearing_id: &str, lubricant_id: &str) -> Result<BearingDesign, Ker
         _ => return Err(KernelError::UnknownBearing),
     };
     match lubricant_id {
-        "thesis_oil" | "thesis_oil_high_speed" => Ok(design),
+        "thesis_oil" | "thesis_oil_hs" => Ok(design),
         _ => Err(KernelError::UnknownLubricant),
     }
 }
 
 /// The high-speed film corrections of a lubricant identifier (docs/physics.md §5.4): none for
-/// `thesis_oil`; for `thesis_oil_high_speed` both, with the core's default β and K and a 1 µm
+/// `thesis_oil`; for `thesis_oil_hs` both, with the core's default β and K and a 1 µm
 /// inlet oil layer (γ = 2), the case whose step cost `hil-sim qemu` reports for corrections on.
 pub fn film_corrections(lubricant_id: &str) -> Result<FilmCorrections, KernelError> {
     use bearing_core::film::corrections::{
         Starvation, ThermalCorrection, OIL_THERMAL_CONDUCTIVITY_W_PER_M_K,
         VG68_TEMPERATURE_VISCOSITY_PER_K,
     };
-    if lubricant_id != "thesis_oil_high_speed" {
+    if lubricant_id != "thesis_oil_hs" {
         return Ok(FilmCorrections::OFF);
     }
     Ok(FilmCorrections {
