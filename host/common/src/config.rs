@@ -407,6 +407,34 @@ mod tests {
         text.lines().position(|l| l.starts_with(prefix)).unwrap() + 1
     }
 
+    /// The high-speed switches reach the core's parameters (off in `hub_motor.toml`, on in
+    /// `hub_motor_high_speed.toml`), and a refused value names its line and field.
+    #[test]
+    fn high_speed_switches_reach_the_params_and_bad_values_are_located() {
+        let (_, plain) = BearingConfig::load(&bundled("hub_motor.toml")).unwrap();
+        assert!(plain.film_corrections().is_off());
+        assert_eq!(plain.centrifugal_force_n(2199.0), None);
+        let text = std::fs::read_to_string(bundled("hub_motor_high_speed.toml")).unwrap();
+        let (_, on) = BearingConfig::parse(&text, Path::new("h.toml")).unwrap();
+        let c = on.film_corrections();
+        assert!(c.thermal.is_some() && c.starvation.is_some());
+        assert!(on.centrifugal_force_n(2199.0).unwrap() > 180.0);
+        for (key, bad) in [
+            ("oil_layer_m", "oil_layer_m = -1.0"),
+            (
+                "thermal_conductivity_w_per_m_k",
+                "thermal_conductivity_w_per_m_k = 0.0",
+            ),
+            ("roller_density_kg_m3", "roller_density_kg_m3 = 1.0e9"),
+        ] {
+            let original = text.lines().find(|l| l.starts_with(key)).unwrap();
+            let bad_text = text.replace(original, bad);
+            let e = BearingConfig::parse(&bad_text, Path::new("h.toml")).unwrap_err();
+            assert_eq!(e.line, Some(line_of(&bad_text, key)), "{e}");
+            assert_eq!(e.field.as_deref(), Some(key), "{e}");
+        }
+    }
+
     #[test]
     fn an_unknown_contact_law_is_named_with_the_laws_allowed() {
         let text = std::fs::read_to_string(bundled("hub_motor.toml")).unwrap();
