@@ -27,6 +27,8 @@ use crate::outputs::StepOutputs;
 use crate::replay::{AccuracyReference, ReferenceOutputs, StepFault};
 use crate::trace::{Sample, TraceMeta};
 use bearing_core::contact::{HertzLineContact, PALMGREN_K};
+use bearing_core::film::corrections::corrected_film_m;
+use bearing_core::film::martin_film_m;
 use bearing_core::{BearingParams, ContactLaw, Crown};
 use bearing_ehl::{ContactCase, Solver, SolverOptions};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -229,7 +231,19 @@ fn film(
             if outer { "outer" } else { "inner" }
         )
     })?;
-    Ok(solution.central_film_m)
+    // The bearing's high-speed corrections (docs/physics.md §5.4), applied to the numerical film
+    // as the core applies them to its own.
+    let corrections = params.film_corrections();
+    if corrections.is_off() {
+        return Ok(solution.central_film_m);
+    }
+    let h = solution.central_film_m as f32;
+    let factor = corrections.factors(&input, h).product();
+    Ok(f64::from(corrected_film_m(
+        h,
+        martin_film_m(&input),
+        factor,
+    )))
 }
 
 /// The film–load coupling of one roller: the root of F(ln Q) = ln Q − ln Q_slices(δ_geo +

@@ -24,7 +24,7 @@ pub fn describe(error: &KernelError) -> String {
             "unknown bearing identifier (known: hub_motor, nu205)".to_string()
         }
         KernelError::UnknownLubricant => {
-            "unknown lubricant identifier (known: thesis_oil)".to_string()
+            "unknown lubricant identifier (known: thesis_oil, thesis_oil_hs)".to_string()
         }
         KernelError::BadSampleRate => "the sample rate is not finite and positive".to_string(),
         KernelError::Parameter(e) => format!("the core refused a parameter: {e}"),

@@ -25,12 +25,21 @@
 //! the film at any load is √(e(λ)² + h_RI(λ)²) with h_RI exact. At the nodes this returns the
 //! model's film exactly.
 //!
+//! **High-speed corrections.** The thermal and starvation factors (docs/physics.md §5.4,
+//! `film::corrections`) depend on the load (through p_h and the flooded film) and on the speed
+//! (through the thermal loading number). They are applied where a node is renewed, at the
+//! node's load and the renewing step's speed, so the step pays the factors of one node —
+//! fixed work — and reading the table costs nothing more. Between renewals a node carries its
+//! factors from the speed it was renewed at, as it carries its film (by u^κ); at a constant
+//! speed the table is the corrected model, node for node.
+//!
 //! **Accuracy.** Linear interpolation of a film e ∝ Q^p between nodes Δλ apart is off by at
 //! most (p·Δλ)²/8: 2·10⁻⁵ for EHL films (p ≈ −0.1), 0.2 % even for |p| = 1.
 
+use crate::film::corrections::{ehl_part, FilmCorrections};
 use crate::film::{ContactInput, FilmModel};
 use crate::lanes::Real;
-use crate::math::{exp, exp_in_range, ln, max, min, sqrt};
+use crate::math::{exp, exp_in_range, ln, max, min};
 
 /// Nodes of the film table per contact kind.
 pub(crate) const TABLE_NODES: usize = 96;
@@ -47,10 +56,6 @@ pub(crate) const SPEED_EXPONENT: f32 = 0.7;
 const LN_LOAD_FIRST: f32 = 0.0;
 /// Half-width in ln Q by which the loaded range is widened when nodes are chosen for renewal.
 const LOADED_MARGIN: f32 = 0.5;
-/// Floor of the non-hydrodynamic part e = √(h² − h_RI²) relative to h: a model film at or below
-/// Martin's (a purely hydrodynamic model) leaves e at this fraction, and the blend then returns
-/// Martin's film within 10⁻⁶.
-const EHL_PART_FLOOR: f32 = 1.0e-3;
 
 /// ln Q of node `i`.
 fn node_ln_load(i: usize) -> f32 {
@@ -92,6 +97,10 @@ pub(crate) struct StepFilms<'a> {
     /// the films are blended in the table's units, √(e² + (B/u^κ·1/Q)²), and scaled by u^κ
     /// once.
     martin_per_scale: [f32; 2],
+    /// A roller's centrifugal force F_c on the outer race (N), when the bearing includes it
+    /// (the same branch at every step, whatever the speed): the outer contact carries
+    /// Q_out = Q + F_c (`sum_split`).
+    centrifugal_n: Option<f32>,
 }
 
 /// Film sums of the rollers in the lanes of `T` (one roller: [`FilmSum`]) at their λ = ln Q,
@@ -126,6 +135,12 @@ impl Default for FilmSum {
 }
 
 impl<T: Real> FilmSums<T> {
+    /// 1/Q at the evaluation (1/N).
+    #[inline(always)]
+    pub(crate) fn inv_load(&self) -> T {
+        self.inv_load
+    }
+
     /// Empty sums, with λ in the table's first cell: a solve's before its first evaluation.
     #[inline(always)]
     pub(crate) fn zero() -> Self {
@@ -231,20 +246,29 @@ fn min_index(a: usize, b: usize) -> usize {
 
 impl FilmTable {
     /// Renew node `i` of contact `k` (0 inner, 1 outer) from `model` for the contact template
-    /// `contact` (load ignored) with Martin coefficient `martin`.
+    /// `contact` (load ignored) with Martin coefficient `martin`, its film corrected by
+    /// `corrections` (docs/physics.md §5.4): the node's part beyond Martin's film is multiplied
+    /// by φ_T·φ_S at the node's load and this step's speed, so a corrected table costs the step
+    /// the factors of one node, and an uncorrected one a multiplication by 1.
     fn renew<F: FilmModel + ?Sized>(
         &mut self,
         model: &F,
         contact: &ContactInput,
-        martin: f32,
+        (martin, corrections): (f32, &FilmCorrections),
         inv_speed_scale: f32,
         (i, k): (usize, usize),
     ) {
         let load_n = exp(node_ln_load(i));
-        let film = model.film(&ContactInput { load_n, ..*contact });
+        let input = ContactInput { load_n, ..*contact };
+        let film = model.film(&input);
         let hydro = martin / load_n;
-        let central = ehl_part(film.central_m, hydro) * inv_speed_scale;
-        let minimum = ehl_part(film.minimum_m, hydro) * inv_speed_scale;
+        let factor = if corrections.is_off() {
+            1.0
+        } else {
+            correction_factor(corrections, &input, film.central_m)
+        };
+        let central = ehl_part(film.central_m, hydro) * factor * inv_speed_scale;
+        let minimum = ehl_part(film.minimum_m, hydro) * factor * inv_speed_scale;
         if let Some(slot) = self.central.get_mut(k).and_then(|c| c.get_mut(i)) {
             *slot = central;
         }
@@ -277,7 +301,7 @@ impl FilmTable {
     pub(crate) fn renew_nodes<F: FilmModel + ?Sized>(
         &mut self,
         model: &F,
-        contacts: [ContactInput; 2],
+        (contacts, corrections): ([ContactInput; 2], &FilmCorrections),
         martin: [f32; 2],
         inv_speed_scale: f32,
         loaded: (f32, f32),
@@ -286,7 +310,7 @@ impl FilmTable {
         if renew_all {
             for i in 0..TABLE_NODES {
                 for (k, (contact, &b)) in contacts.iter().zip(martin.iter()).enumerate() {
-                    self.renew(model, contact, b, inv_speed_scale, (i, k));
+                    self.renew(model, contact, (b, corrections), inv_speed_scale, (i, k));
                 }
             }
         } else {
@@ -317,29 +341,51 @@ impl FilmTable {
                 }
                 let template = contacts.get(contact).copied().unwrap_or(contacts[0]);
                 let b = martin.get(contact).copied().unwrap_or(0.0);
-                self.renew(model, &template, b, inv_speed_scale, (next, contact));
+                self.renew(
+                    model,
+                    &template,
+                    (b, corrections),
+                    inv_speed_scale,
+                    (next, contact),
+                );
                 self.phase = (self.phase + 1) & 3;
             }
         }
     }
 
     /// The table as a step's film law at speed scale u^κ = `speed_scale` (its inverse
-    /// `inv_speed_scale`) with Martin coefficients `martin` (inner, outer).
-    #[inline(always)]
+    /// `inv_speed_scale`) with Martin coefficients `martin` (inner, outer), for rollers without
+    /// centrifugal force ([`FilmTable::films_centrifugal`] without one).
+    #[cfg(test)]
     pub(crate) fn films(
         &self,
         speed_scale: f32,
         inv_speed_scale: f32,
         martin: [f32; 2],
     ) -> StepFilms<'_> {
+        self.films_centrifugal(speed_scale, inv_speed_scale, martin, None)
+    }
+
+    /// [`FilmTable::films`] for rollers pressed on the outer race by `centrifugal_n` (N), if
+    /// the bearing includes the centrifugal force.
+    #[inline(always)]
+    pub(crate) fn films_centrifugal(
+        &self,
+        speed_scale: f32,
+        inv_speed_scale: f32,
+        martin: [f32; 2],
+        centrifugal_n: Option<f32>,
+    ) -> StepFilms<'_> {
         StepFilms {
             table: self,
             speed_scale,
             martin_per_scale: martin.map(|b| b * inv_speed_scale),
+            centrifugal_n,
         }
     }
 
-    /// [`FilmTable::renew_nodes`] at the speed of `contacts`, then this step's films.
+    /// [`FilmTable::renew_nodes`] at the speed of `contacts`, then this step's films
+    /// (uncorrected).
     #[cfg(test)]
     pub(crate) fn step<F: FilmModel + ?Sized>(
         &mut self,
@@ -349,14 +395,129 @@ impl FilmTable {
         loaded: (f32, f32),
         renew_all: bool,
     ) -> StepFilms<'_> {
+        self.step_corrected(
+            model,
+            (contacts, &FilmCorrections::OFF),
+            martin,
+            loaded,
+            renew_all,
+        )
+    }
+
+    /// [`FilmTable::step`] with the film corrections `corrections`.
+    #[cfg(test)]
+    pub(crate) fn step_corrected<F: FilmModel + ?Sized>(
+        &mut self,
+        model: &F,
+        (contacts, corrections): ([ContactInput; 2], &FilmCorrections),
+        martin: [f32; 2],
+        loaded: (f32, f32),
+        renew_all: bool,
+    ) -> StepFilms<'_> {
         let speed_scale = Self::speed_scale(&contacts);
         let inv_speed_scale = 1.0 / speed_scale;
-        self.renew_nodes(model, contacts, martin, inv_speed_scale, loaded, renew_all);
+        self.renew_nodes(
+            model,
+            (contacts, corrections),
+            martin,
+            inv_speed_scale,
+            loaded,
+            renew_all,
+        );
         self.films(speed_scale, inv_speed_scale, martin)
     }
 }
 
 impl StepFilms<'_> {
+    /// Whether the rollers are pressed on the outer race by their centrifugal force.
+    #[inline(always)]
+    pub(crate) fn centrifugal(&self) -> bool {
+        self.centrifugal_n.is_some()
+    }
+
+    /// A roller's centrifugal force on the outer race F_c (N); 0 when left out.
+    #[inline(always)]
+    pub(crate) fn centrifugal_n(&self) -> f32 {
+        self.centrifugal_n.unwrap_or(0.0)
+    }
+
+    /// [`StepFilms::sum_at`] with the outer contact at its own load Q_out = Q·`load_ratio`
+    /// (a roller pressed on the outer race by its centrifugal force, docs/physics.md §4.1):
+    /// the inner film at λ = `ln_load` (1/Q = `inv_load`), the outer at λ_out = `ln_load_out`,
+    /// and dH/dλ with the outer term's dλ_out/dλ = Q/Q_out. The minimum films of the outer
+    /// contact are not kept: [`StepFilms::contacts_from_split`] looks them up at the root.
+    #[inline(always)]
+    pub(crate) fn sum_split<T: Real>(
+        &self,
+        ln_load: T,
+        (ln_load_out, load_ratio): (T, T),
+        inv_load: T,
+    ) -> FilmSums<T> {
+        let one = T::splat(1.0);
+        let cell = Cell::at(ln_load);
+        let outer_weight = one / load_ratio;
+        let per_contact = [
+            (cell, inv_load, one),
+            (Cell::at(ln_load_out), inv_load * outer_weight, outer_weight),
+        ];
+        let mut total_m = T::splat(0.0);
+        let mut slope_m = T::splat(0.0);
+        let mut central = [T::splat(0.0); 2];
+        for (((nodes, &b), h_out), (contact_cell, contact_inv_load, weight)) in self
+            .table
+            .central
+            .iter()
+            .zip(self.martin_per_scale.iter())
+            .zip(central.iter_mut())
+            .zip(per_contact.iter())
+        {
+            let (e, de) = contact_cell.interpolate(nodes);
+            let hydro = T::splat(b) * *contact_inv_load;
+            let h = (e * e + hydro * hydro).sqrt_non_negative();
+            *h_out = h;
+            total_m = total_m + h;
+            slope_m = slope_m + *weight * (e * de - hydro * hydro) / h.max(T::splat(1.0e-30));
+        }
+        let speed_scale = T::splat(self.speed_scale);
+        FilmSums {
+            total_m: total_m * speed_scale,
+            slope_m: slope_m * speed_scale,
+            inv_load,
+            central,
+            cell,
+        }
+    }
+
+    /// [`StepFilms::contacts_from`] for a sum of [`StepFilms::sum_split`]: the outer contact's
+    /// minimum film at its own load, λ_out = `ln_load_out` with Q_out/Q = `load_ratio` at the
+    /// last evaluation.
+    #[inline(always)]
+    pub(crate) fn contacts_from_split<T: Real>(
+        &self,
+        last: &FilmSums<T>,
+        total_m: T,
+        (ln_load_out, load_ratio): (T, T),
+    ) -> [(T, T); 2] {
+        let [inner, (outer_central, _)] = self.contacts_from(last, total_m);
+        let zero = T::splat(0.0);
+        let scale = T::select(
+            last.total_m.gt(zero),
+            total_m / last.total_m.max(T::splat(1.0e-30)),
+            zero,
+        ) * T::splat(self.speed_scale);
+        let [_, outer_minimum] = &self.table.minimum;
+        let [_, outer_martin] = self.martin_per_scale;
+        let hm = Cell::at(ln_load_out).interpolate(outer_minimum).0;
+        let hr_min = T::splat(outer_martin) * last.inv_load / load_ratio;
+        [
+            inner,
+            (
+                outer_central,
+                (hm * hm + hr_min * hr_min).sqrt_non_negative() * scale,
+            ),
+        ]
+    }
+
     /// H and dH/dλ at λ = ln Q, of each roller in the lanes of `T`: each contact's
     /// √(e² + h_RI²), summed. The lanes run the same operations in the same order as one
     /// roller (the same bits); only the table look-ups go lane by lane. Inlined into the
@@ -432,11 +593,12 @@ impl StepFilms<'_> {
     }
 }
 
-/// The part of a film `h` left after removing the hydrodynamic film `hydro` in quadrature,
-/// √(h² − hydro²), floored at [`EHL_PART_FLOOR`]·h.
-fn ehl_part(h: f32, hydro: f32) -> f32 {
-    let floor = EHL_PART_FLOOR * h;
-    sqrt(max(h * h - hydro * hydro, floor * floor))
+/// φ_T·φ_S of a node (`FilmCorrections::factors`), kept out of the step's inlined code: its
+/// powers would otherwise take registers from the whole step of a bearing without corrections.
+#[inline(never)]
+#[cold]
+fn correction_factor(corrections: &FilmCorrections, contact: &ContactInput, flooded_m: f32) -> f32 {
+    corrections.factors(contact, flooded_m).product()
 }
 
 /// Also the fixture of the other film-table users' tests (`coupling`, `lockstep`).
@@ -511,6 +673,57 @@ pub(super) mod tests {
             worst = worst.max((sum.total_m / direct - 1.0).abs());
         }
         assert!(worst < 2.0e-3, "worst {worst}");
+    }
+
+    /// With corrections on, the table serves each contact's film corrected as
+    /// `corrected_film_m` computes it from the model's film and the factors, at the nodes
+    /// (checked at every tenth node, 1 N … 100 kN), and with corrections off the same bits as
+    /// the uncorrected table.
+    #[test]
+    fn corrected_table_serves_the_corrected_model_film() {
+        use crate::film::corrections::{corrected_film_m, Starvation, ThermalCorrection};
+        let c = contacts(30.0);
+        let m = martin(&c);
+        let on = FilmCorrections {
+            thermal: Some(ThermalCorrection::new(0.034, 0.14).unwrap()),
+            starvation: Some(Starvation::new(0.3e-6, 2.0).unwrap()),
+        };
+        let mut table = FilmTable::default();
+        let films = table.step_corrected(&Regression, (c, &on), m, (0.0, 10.0), true);
+        for i in (0..93).step_by(10) {
+            let lambda = node_ln_load(i);
+            let load_n = exp(lambda);
+            let served = films.sum_at(lambda).total_m;
+            let direct: f32 = c
+                .iter()
+                .zip(m.iter())
+                .map(|(t, &b)| {
+                    let input = ContactInput { load_n, ..*t };
+                    let h = Regression.film(&input).central_m;
+                    corrected_film_m(h, b / load_n, on.factors(&input, h).product())
+                })
+                .sum();
+            let flooded = model_sum(&c, lambda);
+            assert!(
+                (served / direct - 1.0).abs() < 1.0e-5,
+                "node {i}: {served} vs {direct}"
+            );
+            assert!(served < flooded, "node {i}: corrections lower the film");
+        }
+        let mut plain = FilmTable::default();
+        let mut off = FilmTable::default();
+        let a = plain.step(&Regression, c, m, (0.0, 10.0), true).sum_at(5.3);
+        let b = off
+            .step_corrected(
+                &Regression,
+                (c, &FilmCorrections::OFF),
+                m,
+                (0.0, 10.0),
+                true,
+            )
+            .sum_at(5.3);
+        assert_eq!(a.total_m.to_bits(), b.total_m.to_bits());
+        assert_eq!(plain, off);
     }
 
     /// A speed change is carried by u^κ until the nodes are renewed; renewing every loaded

@@ -141,8 +141,8 @@ impl<const S: usize> Lockstep<'_, S> {
         let mut prepared_a = prepare_sliced(loads_a, approach_a, geometric_a, &memory_a);
         let mut prepared_b = prepare_sliced(loads_b, approach_b, geometric_b, &memory_b);
         for _ in 0..NEWTON_ITERATIONS {
-            prepared_a.newton.iterate(self.films);
-            prepared_b.newton.iterate(self.films);
+            prepared_a.newton.iterate_with(self.films);
+            prepared_b.newton.iterate_with(self.films);
         }
         self.finish(&prepared_a, &mut memory_a, a);
         self.finish(&prepared_b, &mut memory_b, b);
@@ -167,9 +167,9 @@ impl<const S: usize> Lockstep<'_, S> {
         let mut prepared_b = prepare_sliced(loads_b, approach_b, geometric_b, &memory_b);
         let mut prepared_c = prepare_sliced(loads_c, approach_c, geometric_c, &memory_c);
         for _ in 0..NEWTON_ITERATIONS {
-            prepared_a.newton.iterate(self.films);
-            prepared_b.newton.iterate(self.films);
-            prepared_c.newton.iterate(self.films);
+            prepared_a.newton.iterate_with(self.films);
+            prepared_b.newton.iterate_with(self.films);
+            prepared_c.newton.iterate_with(self.films);
         }
         self.finish(&prepared_a, &mut memory_a, a);
         self.finish(&prepared_b, &mut memory_b, b);
@@ -182,7 +182,7 @@ impl<const S: usize> Lockstep<'_, S> {
         let (mut memory, geometric, approach1, loads) = self.slice::<T, L>(&group);
         let mut prepared = prepare_sliced(loads, approach1, geometric, &memory);
         for _ in 0..NEWTON_ITERATIONS {
-            prepared.newton.iterate(self.films);
+            prepared.newton.iterate_with(self.films);
         }
         self.finish(&prepared, &mut memory, group);
     }
@@ -215,7 +215,11 @@ impl<const S: usize> Lockstep<'_, S> {
         memories: &mut RollerMemory<T>,
         group: Group<'_>,
     ) {
-        let finished = finish_lanes(prepared, self.films, memories);
+        let finished = if self.films.centrifugal() {
+            finish_lanes::<T, true>(prepared, self.films, memories)
+        } else {
+            finish_lanes::<T, false>(prepared, self.films, memories)
+        };
         finished.store_rollers(self.regime_axes, group.out);
         memories.store_lanes(group.memory);
     }
@@ -319,7 +323,7 @@ mod tests {
                     for _ in 0..NEWTON_ITERATIONS {
                         p.newton.iterate(&films);
                     }
-                    let one = finish_roller(&p, &films, &axes, memory);
+                    let one = finish_roller::<false>(&p, &films, &axes, memory);
                     carrying += usize::from(one.load.load_n > 1.0);
                     // Debug output prints every field (floats to the last bit that tells them
                     // apart) and the regimes.

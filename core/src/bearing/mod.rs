@@ -34,7 +34,7 @@ pub use dynamic::{boxed, MAX_ROLLERS, MIN_ROLLERS, SLICES};
 pub use equilibrium::Equilibrium;
 pub use film_kind::{FilmKind, UnknownFilmKind};
 pub use output::{BearingOutput, OutputView, RollerOutput};
-pub use params::BearingParams;
+pub use params::{BearingParams, STEEL_DENSITY_KG_M3};
 use parts::{Parts, Place, LOCKSTEP};
 
 use crate::contact::SlicedRoller;
@@ -315,16 +315,39 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         state.check()?;
         in_range("time_step_s", dt_s, 0.0, MAX_TIME_STEP_S)?;
         let cage_angle_rad = self.cage_angle_after(state.shaft_speed_rad_s, dt_s);
-        match self.film {
-            FilmKind::Int => self.lubricated(&AnnInt, state, cage_angle_rad, pass),
-            FilmKind::F32 => self.lubricated(&AnnF32, state, cage_angle_rad, pass),
-            FilmKind::Regression => self.lubricated(&Regression, state, cage_angle_rad, pass),
-            FilmKind::Dry => self.dry(state, cage_angle_rad),
+        // The centrifugal force is a compile-time switch of the lubricated pass, in a function
+        // of its own: a bearing without it runs the code it ran before.
+        if self.params.centrifugal_density_kg_m3.is_some() {
+            self.lubricated_centrifugal(state, cage_angle_rad, pass);
+        } else {
+            match self.film {
+                FilmKind::Int => self.lubricated::<_, false>(&AnnInt, state, cage_angle_rad, pass),
+                FilmKind::F32 => self.lubricated::<_, false>(&AnnF32, state, cage_angle_rad, pass),
+                FilmKind::Regression => {
+                    self.lubricated::<_, false>(&Regression, state, cage_angle_rad, pass)
+                }
+                FilmKind::Dry => self.dry(state, cage_angle_rad),
+            }
         }
         if pass != Pass::Trial {
             self.cage_angle_rad = cage_angle_rad;
         }
         Ok(&self.output)
+    }
+
+    /// The pass of a bearing with the rollers' centrifugal force (docs/physics.md §4.1), with
+    /// the bearing's film model. Not inlined into `run`: six copies of the lubricated pass
+    /// there cost the step without it ≈ 300 instructions on the M4.
+    #[inline(never)]
+    fn lubricated_centrifugal(&mut self, state: &OperatingState, cage_angle_rad: f32, pass: Pass) {
+        match self.film {
+            FilmKind::Int => self.lubricated::<_, true>(&AnnInt, state, cage_angle_rad, pass),
+            FilmKind::F32 => self.lubricated::<_, true>(&AnnF32, state, cage_angle_rad, pass),
+            FilmKind::Regression => {
+                self.lubricated::<_, true>(&Regression, state, cage_angle_rad, pass)
+            }
+            FilmKind::Dry => self.dry(state, cage_angle_rad),
+        }
     }
 
     /// Per-step data of the two contacts (inner, outer).
@@ -364,9 +387,9 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         steps: usize,
     ) -> BearingOutput<Z> {
         let angle = self.cage_angle_rad;
-        self.lubricated(film, state, angle, Pass::RenewAll);
+        self.lubricated::<F, false>(film, state, angle, Pass::RenewAll);
         for _ in 1..steps {
-            self.lubricated(film, state, angle, Pass::Advance);
+            self.lubricated::<F, false>(film, state, angle, Pass::Advance);
         }
         self.output
     }
@@ -381,7 +404,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     /// network's step cost the M4 ≈ 90 instructions more (28 244 against 28 152 per replayed
     /// hub-motor step).
     #[inline(always)]
-    fn lubricated<F: FilmModel>(
+    fn lubricated<F: FilmModel, const CENTRIFUGAL: bool>(
         &mut self,
         film: &F,
         state: &OperatingState,
@@ -431,14 +454,22 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         if renew {
             self.table.renew_nodes(
                 film,
-                templates,
+                (templates, &self.params.film_corrections),
                 martin,
                 inv_speed_scale,
                 self.load_span,
                 renew_all,
             );
         }
-        let films = self.table.films(speed_scale, inv_speed_scale, martin);
+        // The rollers' centrifugal force on the outer race, if the bearing includes it.
+        let centrifugal_n = if CENTRIFUGAL {
+            self.params.centrifugal_force_n(state.shaft_speed_rad_s)
+        } else {
+            None
+        };
+        let films =
+            self.table
+                .films_centrifugal(speed_scale, inv_speed_scale, martin, centrifugal_n);
         // A trial works on a copy of the warm start (only a trial pays for the copy).
         let mut trial_memory;
         let memory = if pass == Pass::Trial {
@@ -487,11 +518,17 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                     let mut p = prepare_roller(roller, geometric, tilt, memory);
                     // A local copy, which the compiler keeps in registers.
                     let mut newton = p.newton;
-                    for _ in 0..NEWTON_ITERATIONS {
-                        newton.iterate(&films);
+                    if CENTRIFUGAL {
+                        for _ in 0..NEWTON_ITERATIONS {
+                            newton.iterate_centrifugal(&films);
+                        }
+                    } else {
+                        for _ in 0..NEWTON_ITERATIONS {
+                            newton.iterate(&films);
+                        }
                     }
                     p.newton = newton;
-                    finish_roller(&p, &films, &regime_axes, memory)
+                    finish_roller::<CENTRIFUGAL>(&p, &films, &regime_axes, memory)
                 };
                 let loaded = r.load.load_n >= 1.0;
                 span = (
@@ -524,6 +561,9 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 (r.load, roller, r.film_coupling_m_per_n)
             },
         );
+        if CENTRIFUGAL {
+            self.output.centrifugal_force_n = centrifugal_n.unwrap_or(0.0);
+        }
         // The loads the next step renews the table at first; unchanged when nothing is loaded.
         if (span.0 <= span.1) & (pass != Pass::Trial) {
             self.load_span = span;
@@ -555,6 +595,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
     /// One dry pass (film ≡ 0) at cage angle `cage_angle_rad`: today's multi-body practice,
     /// for comparison. It keeps nothing from one step to the next but the cage angle.
     fn dry(&mut self, state: &OperatingState, cage_angle_rad: f32) {
+        let centrifugal_n = self.params.centrifugal_force_n(state.shaft_speed_rad_s);
         let parts = Parts {
             params: &self.params,
             roller: &self.roller,
@@ -589,10 +630,14 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             cage_angle_rad,
             &places,
             |roller, _, j, geometric, tilt| {
-                let load = if LOCKSTEP {
+                let slices = if LOCKSTEP {
                     loads.get(j).copied().unwrap_or_default()
                 } else {
                     roller.evaluate(geometric, tilt)
+                };
+                let load = match centrifugal_n {
+                    Some(f_c) => coupling::dry_centrifugal(roller, slices, geometric, f_c),
+                    None => slices,
                 };
                 let roller = RollerOutput {
                     approach_m: geometric,
@@ -604,6 +649,7 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 (load, roller, 0.0)
             },
         );
+        self.output.centrifugal_force_n = centrifugal_n.unwrap_or(0.0);
     }
 }
 
@@ -614,6 +660,8 @@ fn wrap_turns(angle_rad: f32) -> f32 {
     angle_rad - turns as f32 * TAU
 }
 
+#[cfg(test)]
+mod high_speed_tests;
 #[cfg(test)]
 mod stepping_tests;
 #[cfg(test)]

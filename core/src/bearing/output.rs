@@ -74,6 +74,9 @@ pub struct BearingOutput<const Z: usize> {
     pub stiffness: [[f32; 4]; 4],
     /// Damping −∂(F_x, F_y)/∂(ẋ, ẏ) (N·s/m).
     pub damping_n_s_per_m: [[f32; 2]; 2],
+    /// Each roller's centrifugal force on the outer race F_c (N; 0 when the bearing leaves it
+    /// out, docs/physics.md §4.1): every roller's outer contact carries its `load_n` + F_c.
+    pub centrifugal_force_n: f32,
     /// Per-roller states.
     pub rollers: [RollerOutput; Z],
 }
@@ -85,6 +88,7 @@ impl<const Z: usize> BearingOutput<Z> {
         moment_nm: [0.0; 2],
         stiffness: [[0.0; 4]; 4],
         damping_n_s_per_m: [[0.0; 2]; 2],
+        centrifugal_force_n: 0.0,
         rollers: [RollerOutput::ZERO; Z],
     };
 
@@ -95,6 +99,7 @@ impl<const Z: usize> BearingOutput<Z> {
             moment_nm: self.moment_nm,
             stiffness: self.stiffness,
             damping_n_s_per_m: self.damping_n_s_per_m,
+            centrifugal_force_n: self.centrifugal_force_n,
             rollers: &self.rollers,
         }
     }
@@ -126,11 +131,18 @@ pub struct OutputView<'a> {
     pub stiffness: [[f32; 4]; 4],
     /// Damping −∂(F_x, F_y)/∂(ẋ, ẏ) (N·s/m).
     pub damping_n_s_per_m: [[f32; 2]; 2],
+    /// Each roller's centrifugal force on the outer race (N; see [`BearingOutput`]).
+    pub centrifugal_force_n: f32,
     /// Per-roller states, one per roller.
     pub rollers: &'a [RollerOutput],
 }
 
 impl OutputView<'_> {
+    /// The load of `roller`'s outer contact, Q_out = Q_in + F_c (N).
+    pub fn load_out_n(&self, roller: &RollerOutput) -> f32 {
+        roller.load_n + self.centrifugal_force_n
+    }
+
     /// The 2×2 radial stiffness block −∂(F_x, F_y)/∂(x, y) (N/m).
     pub fn radial_stiffness_n_per_m(&self) -> [[f32; 2]; 2] {
         let [r0, r1, _, _] = self.stiffness;

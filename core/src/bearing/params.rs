@@ -2,8 +2,12 @@
 
 use crate::contact::ContactLaw;
 use crate::error::{in_range, ParamError};
+use crate::film::corrections::FilmCorrections;
 use crate::film::ContactInput;
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material};
+
+/// Density of bearing steel (kg/m³), the usual roller density.
+pub const STEEL_DENSITY_KG_M3: f32 = 7850.0;
 
 /// Everything that defines a lubricated roller bearing.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -13,6 +17,9 @@ pub struct BearingParams {
     pub(super) lubricant: Lubricant,
     pub(super) law: ContactLaw,
     pub(super) damping_factor_s: f32,
+    pub(super) film_corrections: FilmCorrections,
+    /// Density of the rollers (kg/m³) when the bearing includes their centrifugal force.
+    pub(super) centrifugal_density_kg_m3: Option<f32>,
 }
 
 impl BearingParams {
@@ -33,7 +40,56 @@ impl BearingParams {
             lubricant,
             law,
             damping_factor_s: in_range("damping_factor_s", damping_factor_s, 0.0, 1.0e-3)?,
+            film_corrections: FilmCorrections::OFF,
+            centrifugal_density_kg_m3: None,
         })
+    }
+
+    /// The same bearing with the rollers' centrifugal force on the outer race (docs/physics.md
+    /// §4.1), rollers of density ρ (`roller_density_kg_m3`, 1000 … 20 000 kg/m³; bearing steel
+    /// [`STEEL_DENSITY_KG_M3`]). A bearing is built without it.
+    pub fn with_centrifugal_force(self, roller_density_kg_m3: f32) -> Result<Self, ParamError> {
+        Ok(Self {
+            centrifugal_density_kg_m3: Some(in_range(
+                "roller_density_kg_m3",
+                roller_density_kg_m3,
+                1000.0,
+                20_000.0,
+            )?),
+            ..self
+        })
+    }
+
+    /// The roller mass m = ρ·(π/4)·D²·l (kg) of the centrifugal force, with l the effective
+    /// length (the edge radii's share of the roller is left out); `None` without it.
+    pub fn roller_mass_kg(&self) -> Option<f32> {
+        let g = &self.geometry;
+        let d = g.roller_diameter_m();
+        self.centrifugal_density_kg_m3
+            .map(|rho| rho * (0.25 * core::f32::consts::PI) * d * d * g.roller_length_m())
+    }
+
+    /// A roller's centrifugal force F_c = m·ω_c²·d_m/2 (N) at shaft speed ω (rad/s), ω_c the
+    /// cage speed (docs/physics.md §2); `None` when the bearing leaves it out.
+    pub fn centrifugal_force_n(&self, shaft_speed_rad_s: f32) -> Option<f32> {
+        let g = &self.geometry;
+        let cage = g.cage_speed_rad_s(shaft_speed_rad_s);
+        self.roller_mass_kg()
+            .map(|m| m * cage * cage * (0.5 * g.pitch_diameter_m()))
+    }
+
+    /// The same bearing with the high-speed film corrections `corrections` (docs/physics.md
+    /// §5.4); a bearing is built with none ([`FilmCorrections::OFF`]).
+    pub fn with_film_corrections(self, corrections: FilmCorrections) -> Self {
+        Self {
+            film_corrections: corrections,
+            ..self
+        }
+    }
+
+    /// The high-speed film corrections applied after the film model.
+    pub fn film_corrections(&self) -> &FilmCorrections {
+        &self.film_corrections
     }
 
     /// Geometry.

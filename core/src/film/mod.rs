@@ -11,6 +11,7 @@
 //! loads are per roller (N) over the effective length `l` (m).
 
 pub mod ann;
+pub mod corrections;
 
 /// Everything the isothermal line-contact film depends on (docs/physics.md §5.3: solid density and
 /// Poisson's ratio do not enter once `E'` is given).

@@ -16,6 +16,7 @@
 
 use super::outputs::{StepOutputs, MAX_ROLLERS};
 use super::wire::Sample;
+use bearing_core::film::corrections::FilmCorrections;
 pub use bearing_core::FilmKind;
 use bearing_core::{Bearing, BearingDesign, BearingParams, OperatingState};
 
@@ -48,7 +49,8 @@ pub enum KernelFault {
 
 /// The design of a bearing identifier in a lubricant identifier: the core's preset of
 /// `configs/<bearing>.toml` (docs/physics.md §6). `thesis_oil` (η₀ = 0.08 Pa·s, α = 2.1·10⁻⁸ 1/Pa,
-/// ρ₀ = 833.8 kg/m³, the oil of both reference machines, §6.1, §6.2) is the presets' own.
+/// ρ₀ = 833.8 kg/m³, the oil of both reference machines, §6.1, §6.2) is the presets' own;
+/// `thesis_oil_hs` is the same oil with the film corrections of [`film_corrections`].
 pub fn design(bearing_id: &str, lubricant_id: &str) -> Result<BearingDesign, KernelError> {
     let design = match bearing_id {
         "hub_motor" => BearingDesign::HUB_MOTOR,
@@ -56,16 +58,40 @@ pub fn design(bearing_id: &str, lubricant_id: &str) -> Result<BearingDesign, Ker
         _ => return Err(KernelError::UnknownBearing),
     };
     match lubricant_id {
-        "thesis_oil" => Ok(design),
+        "thesis_oil" | "thesis_oil_hs" => Ok(design),
         _ => Err(KernelError::UnknownLubricant),
     }
 }
 
-/// The validated parameters of [`design`].
+/// The high-speed film corrections of a lubricant identifier (docs/physics.md §5.4): none for
+/// `thesis_oil`; for `thesis_oil_hs` both, with the core's default β and K and a 1 µm
+/// inlet oil layer (γ = 2), the case whose step cost `hil-sim qemu` reports for corrections on.
+pub fn film_corrections(lubricant_id: &str) -> Result<FilmCorrections, KernelError> {
+    use bearing_core::film::corrections::{
+        Starvation, ThermalCorrection, OIL_THERMAL_CONDUCTIVITY_W_PER_M_K,
+        VG68_TEMPERATURE_VISCOSITY_PER_K,
+    };
+    if lubricant_id != "thesis_oil_hs" {
+        return Ok(FilmCorrections::OFF);
+    }
+    Ok(FilmCorrections {
+        thermal: Some(
+            ThermalCorrection::new(
+                VG68_TEMPERATURE_VISCOSITY_PER_K,
+                OIL_THERMAL_CONDUCTIVITY_W_PER_M_K,
+            )
+            .map_err(KernelError::Parameter)?,
+        ),
+        starvation: Some(Starvation::new(1.0e-6, 2.0).map_err(KernelError::Parameter)?),
+    })
+}
+
+/// The validated parameters of [`design`], with the [`film_corrections`] of the lubricant.
 pub fn params(bearing_id: &str, lubricant_id: &str) -> Result<BearingParams, KernelError> {
-    design(bearing_id, lubricant_id)?
+    Ok(design(bearing_id, lubricant_id)?
         .params()
-        .map_err(KernelError::Parameter)
+        .map_err(KernelError::Parameter)?
+        .with_film_corrections(film_corrections(lubricant_id)?))
 }
 
 /// The core's bearing at the roller count of each known identifier.
@@ -161,7 +187,7 @@ impl Kernel {
     /// the outputs.
     // Inlined into the caller's crate (the firmware's replay loop, the host's stepper) and
     // compiled there, as one unit with the loop: measured on the M4 (`hil-sim qemu`, hub motor,
-    // int network), 28 046 instructions per step, every step; as a call into this crate the
+    // int network), 28 264 instructions per step, every step; as a call into this crate the
     // count was ≈ 45 higher and varied with the data, which `hil-sim qemu` refuses (min = max).
     #[inline(always)]
     pub fn step(&mut self, sample: &Sample, out: &mut StepOutputs) -> Result<(), KernelFault> {

@@ -8,6 +8,10 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
+use bearing_core::film::corrections::{
+    FilmCorrections, Starvation, ThermalCorrection, OIL_THERMAL_CONDUCTIVITY_W_PER_M_K,
+    VG68_TEMPERATURE_VISCOSITY_PER_K,
+};
 use bearing_core::{BearingDesign, BearingParams, ContactLaw, ParamError};
 use serde::{Deserialize, Serialize};
 
@@ -32,6 +36,77 @@ pub struct BearingConfig {
     /// Default operating case for the CLI.
     #[serde(default)]
     pub case: CaseConfig,
+    /// High-speed film corrections (docs/physics.md §5.4); off unless switched on.
+    #[serde(default)]
+    pub film_corrections: FilmCorrectionsConfig,
+}
+
+/// `[film_corrections]`: the thermal and starvation factors applied after the film model.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct FilmCorrectionsConfig {
+    /// Inlet shear heating (Gupta et al. 1992).
+    #[serde(default)]
+    pub thermal: bool,
+    /// β of η = η₀·e^(−β(T − T₀)) (1/K).
+    #[serde(default = "default_temperature_viscosity")]
+    pub temperature_viscosity_per_k: f32,
+    /// Oil thermal conductivity K (W/(m·K)).
+    #[serde(default = "default_conductivity")]
+    pub thermal_conductivity_w_per_m_k: f32,
+    /// Limited inlet supply (Chevalier et al. 1998).
+    #[serde(default)]
+    pub starvation: bool,
+    /// Inlet oil layer thickness h_oil (m); required with `starvation = true`.
+    pub oil_layer_m: Option<f32>,
+    /// The starvation model's transition exponent γ; required with `starvation = true`.
+    pub starvation_exponent: Option<f32>,
+}
+
+fn default_temperature_viscosity() -> f32 {
+    VG68_TEMPERATURE_VISCOSITY_PER_K
+}
+fn default_conductivity() -> f32 {
+    OIL_THERMAL_CONDUCTIVITY_W_PER_M_K
+}
+
+impl Default for FilmCorrectionsConfig {
+    fn default() -> Self {
+        Self {
+            thermal: false,
+            temperature_viscosity_per_k: default_temperature_viscosity(),
+            thermal_conductivity_w_per_m_k: default_conductivity(),
+            starvation: false,
+            oil_layer_m: None,
+            starvation_exponent: None,
+        }
+    }
+}
+
+impl FilmCorrectionsConfig {
+    /// The core's corrections; the error names the first refused (or missing: value NaN) field.
+    pub fn corrections(&self) -> Result<FilmCorrections, ParamError> {
+        let thermal = if self.thermal {
+            Some(ThermalCorrection::new(
+                self.temperature_viscosity_per_k,
+                self.thermal_conductivity_w_per_m_k,
+            )?)
+        } else {
+            None
+        };
+        let starvation = if self.starvation {
+            Some(Starvation::new(
+                self.oil_layer_m.unwrap_or(f32::NAN),
+                self.starvation_exponent.unwrap_or(f32::NAN),
+            )?)
+        } else {
+            None
+        };
+        Ok(FilmCorrections {
+            thermal,
+            starvation,
+        })
+    }
 }
 
 /// `[geometry]`.
@@ -85,6 +160,12 @@ pub struct ModelConfig {
     /// f_damp (s).
     #[serde(default = "default_damping")]
     pub damping_factor_s: f32,
+    /// The rollers' centrifugal force on the outer race (docs/physics.md §4.1).
+    #[serde(default)]
+    pub centrifugal: bool,
+    /// Roller density ρ (kg/m³) of the centrifugal force.
+    #[serde(default = "default_roller_density")]
+    pub roller_density_kg_m3: f32,
 }
 
 fn default_law() -> String {
@@ -93,12 +174,17 @@ fn default_law() -> String {
 fn default_damping() -> f32 {
     1.0e-5
 }
+fn default_roller_density() -> f32 {
+    bearing_core::bearing::STEEL_DENSITY_KG_M3
+}
 
 impl Default for ModelConfig {
     fn default() -> Self {
         Self {
             contact_law: default_law(),
             damping_factor_s: default_damping(),
+            centrifugal: false,
+            roller_density_kg_m3: default_roller_density(),
         }
     }
 }
@@ -225,7 +311,15 @@ impl BearingConfig {
     /// The core parameters: the file's fields as the core's [`BearingDesign`], validated by
     /// it (the first refused field is named).
     pub fn params(&self) -> Result<BearingParams, ParamError> {
-        let params = self.design()?.params()?;
+        let params = self
+            .design()?
+            .params()?
+            .with_film_corrections(self.film_corrections.corrections()?);
+        let params = if self.model.centrifugal {
+            params.with_centrifugal_force(self.model.roller_density_kg_m3)?
+        } else {
+            params
+        };
         // The core's geometry takes up to 128 rollers; the host's run-time bearing (`rolling`)
         // is compiled for MIN_ROLLERS ..= MAX_ROLLERS, so a count outside it would be refused
         // later, far from the file.
@@ -311,6 +405,34 @@ mod tests {
     /// The line of `prefix…` in `text` (1-based).
     fn line_of(text: &str, prefix: &str) -> usize {
         text.lines().position(|l| l.starts_with(prefix)).unwrap() + 1
+    }
+
+    /// The high-speed switches reach the core's parameters (off in `hub_motor.toml`, on in
+    /// `hub_motor_high_speed.toml`), and a refused value names its line and field.
+    #[test]
+    fn high_speed_switches_reach_the_params_and_bad_values_are_located() {
+        let (_, plain) = BearingConfig::load(&bundled("hub_motor.toml")).unwrap();
+        assert!(plain.film_corrections().is_off());
+        assert_eq!(plain.centrifugal_force_n(2199.0), None);
+        let text = std::fs::read_to_string(bundled("hub_motor_high_speed.toml")).unwrap();
+        let (_, on) = BearingConfig::parse(&text, Path::new("h.toml")).unwrap();
+        let c = on.film_corrections();
+        assert!(c.thermal.is_some() && c.starvation.is_some());
+        assert!(on.centrifugal_force_n(2199.0).unwrap() > 180.0);
+        for (key, bad) in [
+            ("oil_layer_m", "oil_layer_m = -1.0"),
+            (
+                "thermal_conductivity_w_per_m_k",
+                "thermal_conductivity_w_per_m_k = 0.0",
+            ),
+            ("roller_density_kg_m3", "roller_density_kg_m3 = 1.0e9"),
+        ] {
+            let original = text.lines().find(|l| l.starts_with(key)).unwrap();
+            let bad_text = text.replace(original, bad);
+            let e = BearingConfig::parse(&bad_text, Path::new("h.toml")).unwrap_err();
+            assert_eq!(e.line, Some(line_of(&bad_text, key)), "{e}");
+            assert_eq!(e.field.as_deref(), Some(key), "{e}");
+        }
     }
 
     #[test]

@@ -18,6 +18,9 @@ pub struct StepSnapshot {
     pub stiffness: [[f32; 4]; 4],
     /// −∂F/∂(ẋ, ẏ) (N·s/m).
     pub damping_n_s_per_m: [[f32; 2]; 2],
+    /// Each roller's centrifugal force on the outer race (N; 0 when left out): a roller's
+    /// outer contact carries its `load_n` plus this.
+    pub centrifugal_force_n: f32,
     /// Per roller.
     pub rollers: Vec<RollerOutput>,
 }
@@ -41,6 +44,7 @@ impl From<OutputView<'_>> for StepSnapshot {
             moment_nm: o.moment_nm,
             stiffness: o.stiffness,
             damping_n_s_per_m: o.damping_n_s_per_m,
+            centrifugal_force_n: o.centrifugal_force_n,
             rollers: o.rollers.to_vec(),
         }
     }

@@ -239,6 +239,55 @@ impl<T: Real> PowerLaw<T> {
     }
 }
 
+/// Newton steps of the dry roller's centrifugal split ([`dry_centrifugal`]).
+const DRY_CENTRIFUGAL_STEPS: usize = 4;
+
+/// A dry roller pressed on the outer race by its centrifugal force F_c = `centrifugal_n` (N,
+/// docs/physics.md §4.1). The slices' `loads` at the geometric approach `approach_m` (m) are
+/// those of two contacts at equal loads Q_s; with each contact on half the power law through
+/// them (e(Q) = s·(Q/Q_s)^(1/n) beyond its offset), the inner load solves
+/// ½·[e(Q_in) + e(Q_in + F_c)] = s, by [`DRY_CENTRIFUGAL_STEPS`] Newton steps from
+/// Q_s − F_c/2: the root for n = 1, and left of it for n > 1, where the concave law's Newton
+/// steps rise monotonically to it. Where F_c alone takes the outer contact past the approach,
+/// the roller leaves the inner race (Q_in = 0). Load and stiffness (the two contacts in
+/// series, dQ_in/dδ) follow the law; moment and tilt terms stay the slices'.
+pub(crate) fn dry_centrifugal<const S: usize>(
+    roller: &SlicedRoller<S>,
+    loads: RollerLoad,
+    approach_m: f32,
+    centrifugal_n: f32,
+) -> RollerLoad {
+    use crate::math::{max, pow, select};
+    let law = PowerLaw::fit(
+        &RollerLoads::<f32>::from_lanes(&loads),
+        approach_m,
+        &PowerLaw::untouched(roller),
+    );
+    let q_s = max(loads.load_n, FIT_MIN_N);
+    let inverse_n = 1.0 / law.exponent;
+    // e(Q)/s and its derivative in Q.
+    let relative = |q: f32| pow(q / q_s, inverse_n);
+    let mut q = max(q_s - 0.5 * centrifugal_n, 1.0e-6 * q_s);
+    for _ in 0..DRY_CENTRIFUGAL_STEPS {
+        let (inner, outer) = (relative(q), relative(q + centrifugal_n));
+        let residual = 0.5 * (inner + outer) - 1.0;
+        let slope = 0.5 * inverse_n * (inner / q + outer / (q + centrifugal_n));
+        q = max(q - residual / max(slope, 1.0e-30), 1.0e-6 * q_s);
+    }
+    let carried = (loads.load_n > FIT_MIN_N) & (relative(centrifugal_n) < 2.0);
+    let load_n = select(carried, q, 0.0);
+    // dδ/dQ_in = ½·(s/n)·[(Q_in/Q_s)^(1/n)/Q_in + (Q_out/Q_s)^(1/n)/Q_out].
+    let compliance = 0.5
+        * law.span_m
+        * inverse_n
+        * (relative(q) / q + relative(q + centrifugal_n) / (q + centrifugal_n));
+    RollerLoad {
+        load_n,
+        stiffness_n_per_m: select(carried, 1.0 / max(compliance, 1.0e-30), 0.0),
+        ..loads
+    }
+}
+
 /// What a roller's step has before its Newton iterations (of one roller, or of the rollers
 /// in the lanes of `T`): the slices at the predicted approach and the power law fitted there.
 #[derive(Clone, Copy, Debug)]
@@ -390,19 +439,19 @@ impl<T: Real> Finished<T> {
 /// Finish one prepared roller after its Newton iterations: load, films and regimes, and its
 /// memory for the next step (updated).
 #[inline(always)]
-pub(crate) fn finish_roller(
+pub(crate) fn finish_roller<const CENTRIFUGAL: bool>(
     prepared: &Prepared,
     films: &StepFilms<'_>,
     regime_axes: &[RegimeAxis; 2],
     memory: &mut RollerMemory,
 ) -> CoupledRoller {
-    finish_lanes::<f32>(prepared, films, memory).roller(0, regime_axes)
+    finish_lanes::<f32, CENTRIFUGAL>(prepared, films, memory).roller(0, regime_axes)
 }
 
 /// [`finish_roller`] but the regimes, of one roller or of the rollers in the lanes of `T`
 /// (the host finishes four or eight at once), with their memories `memory` (updated).
 #[inline(always)]
-pub(crate) fn finish_lanes<T: Real>(
+pub(crate) fn finish_lanes<T: Real, const CENTRIFUGAL: bool>(
     prepared: &Prepared<T>,
     films: &StepFilms<'_>,
     memory: &mut RollerMemory<T>,
@@ -421,10 +470,30 @@ pub(crate) fn finish_lanes<T: Real>(
     // At the root, Q = e^λ is the law's load at `approach_m`; a roller whose approach stays
     // short of the law's offset (no film, separated) carries nothing.
     let carried = T::select(approach_m.gt(law1.offset_m), load_n, T::splat(0.0));
-    let load = RollerLoads {
+    let mut load = RollerLoads {
         load_n: carried,
         moment_nm: r1.moment_nm + r1.stiffness_moment_n * (approach_m - approach1),
         ..r1
+    };
+    // A roller pressed on the outer race by its centrifugal force (docs/physics.md §4.1): its
+    // contacts carry Q_in and Q_in + F_c, each with its own film, and its stiffness is the
+    // law's dQ_in/dδ = Q_in/(dδ/dλ) of the two contacts in series, not the slices' at equal
+    // loads. `CENTRIFUGAL` is the bearing's switch (`films.centrifugal()`), a compile-time
+    // constant so that a bearing without it runs the code it ran before.
+    let contact_films = if CENTRIFUGAL {
+        load.stiffness_n_per_m = T::select(
+            approach_m.gt(law1.offset_m),
+            load_n / solved2.elastic_slope_m.max(T::splat(1.0e-30)),
+            T::splat(0.0),
+        );
+        let last_ratio = T::splat(1.0) + T::splat(films.centrifugal_n()) * solved2.last.inv_load();
+        films.contacts_from_split(
+            &solved2.last,
+            solved2.film_m,
+            (solved2.last_ln_load + ln_normal(last_ratio), last_ratio),
+        )
+    } else {
+        films.contacts_from(&solved2.last, solved2.film_m)
     };
     // At the root, dE/dλ·dλ = dδ_geo + dH/dλ·dλ: dH/dδ_geo = H'/(E' − H').
     let film_slope_m = solved2.last.slope_m;
@@ -448,7 +517,7 @@ pub(crate) fn finish_lanes<T: Real>(
         load,
         approach_m,
         ln_load,
-        films: films.contacts_from(&solved2.last, solved2.film_m),
+        films: contact_films,
         softening,
         film_coupling_m_per_n: film_slope_m_per_n * softening,
     }

@@ -5,7 +5,7 @@
 use super::PowerLaw;
 use crate::bearing::film_table::{FilmSums, StepFilms};
 use crate::lanes::Real;
-use crate::math::exp2_in_range;
+use crate::math::{exp2_in_range, exp_in_range, ln_normal};
 
 /// Bracket of the roller load in the scalar solve (N): 10⁻⁴ N … 10⁷ N.
 const LN_LOAD_MIN: f32 = -9.210_34;
@@ -23,6 +23,8 @@ pub(super) struct Solved<T: Real> {
     pub(super) last: FilmSums<T>,
     /// dδ/dλ of the elastic approach at the last evaluation (m).
     pub(super) elastic_slope_m: T,
+    /// λ of the last evaluation.
+    pub(super) last_ln_load: T,
 }
 
 /// Solves δ_off + s·e^((λ − λ_ref)/n) = δ_geo + H(λ) for λ = ln Q by safeguarded Newton steps
@@ -108,6 +110,7 @@ impl<T: Real> Newton<T> {
             film_m: (last.total_m + last.slope_m * (self.lam - at)).max(T::splat(0.0)),
             last,
             elastic_slope_m,
+            last_ln_load: at,
         }
     }
 
@@ -161,8 +164,50 @@ impl<T: Real> Newton<T> {
         let elastic =
             self.span_m * exp2_in_range(self.inverse_exponent_log2 * (lam - self.ln_load_ref));
         let f = films.sum_at(lam);
-        let (h, dh) = (f.total_m.max(T::splat(1.0e-30)), f.slope_m);
         let elastic_slope = self.inverse_exponent * elastic;
+        self.step(lam, (elastic, elastic_slope), f);
+    }
+
+    /// [`Newton::iterate_centrifugal`] where the step's films carry a centrifugal force, else
+    /// [`Newton::iterate`] (the host's lanes; the Cortex-M4 takes the branch once per roller).
+    #[inline(always)]
+    pub(crate) fn iterate_with(&mut self, films: &StepFilms<'_>) {
+        if films.centrifugal() {
+            self.iterate_centrifugal(films);
+        } else {
+            self.iterate(films);
+        }
+    }
+
+    /// [`Newton::iterate`] of a roller pressed on the outer race by its centrifugal force F_c
+    /// (`films.centrifugal_n()`, docs/physics.md §4.1): λ = ln Q_in, the outer contact carries
+    /// Q_out = Q_in + F_c. Each contact follows half the whole-roller law at its own load, so
+    /// the elastic approach is δ_off + ½·s·[e^((λ − λ_ref)/n) + e^((λ_out − λ_ref)/n)] with
+    /// λ_out = λ + ln(1 + F_c/Q_in), and the film sum is h_in(Q_in) + h_out(Q_out)
+    /// (`StepFilms::sum_split`). One exponential and one logarithm more than `iterate`.
+    #[inline(always)]
+    pub(crate) fn iterate_centrifugal(&mut self, films: &StepFilms<'_>) {
+        let lam = self.lam;
+        let c = T::splat;
+        // λ is bracketed: 1/Q ≤ 10⁴, and 1 ≤ Q_out/Q_in stays normal and finite.
+        let inv_load = exp_in_range(-lam);
+        let load_ratio = c(1.0) + c(films.centrifugal_n()) * inv_load;
+        let ln_ratio = ln_normal(load_ratio);
+        let exponent = self.inverse_exponent_log2 * (lam - self.ln_load_ref);
+        let inner = self.span_m * exp2_in_range(exponent);
+        let outer = self.span_m * exp2_in_range(exponent + self.inverse_exponent_log2 * ln_ratio);
+        let elastic = c(0.5) * (inner + outer);
+        // dλ_out/dλ = Q_in/Q_out.
+        let elastic_slope = self.inverse_exponent * c(0.5) * (inner + outer / load_ratio);
+        let f = films.sum_split(lam, (lam + ln_ratio, load_ratio), inv_load);
+        self.step(lam, (elastic, elastic_slope), f);
+    }
+
+    /// The safeguarded step of [`Newton::iterate`] from the evaluation at λ = `lam`: the
+    /// elastic approach beyond the law's offset and its dδ/dλ (m), and the film sum `f`.
+    #[inline(always)]
+    fn step(&mut self, lam: T, (elastic, elastic_slope): (T, T), f: FilmSums<T>) {
+        let (h, dh) = (f.total_m.max(T::splat(1.0e-30)), f.slope_m);
         self.last = (lam, f, elastic_slope);
         let missing = elastic - self.gap;
         let defined = missing.gt(T::splat(0.0));

@@ -7,7 +7,8 @@ use std::path::PathBuf;
 use anyhow::{bail, Context};
 use bearing_core::contact::HertzLineContact;
 use bearing_core::film::ann::{AnnF32, AnnInt};
-use bearing_core::film::{moes_central, Hydrodynamic, LnGroups};
+use bearing_core::film::corrections::{corrected_film_m, FilmCorrections};
+use bearing_core::film::{martin_film_m, moes_central, Hydrodynamic, LnGroups};
 use bearing_core::{ContactInput, FilmModel, FilmSource, Regime, Regression};
 use bearing_ehl::{self as ehl, ContactCase, EhlError, EhlSolution, SolverOptions};
 use clap::Args;
@@ -189,6 +190,39 @@ pub(super) fn numerical_solution(contact: &ContactInput) -> Result<EhlSolution, 
     .and_then(|case| ehl::solve(&case, &SolverOptions::default()))
 }
 
+/// The high-speed corrections (docs/physics.md §5.4) of every model's film in `report`: per
+/// model its factors φ_T, φ_S and its films corrected by them, as the core's film table serves
+/// them (a model without a film is left as it is).
+fn add_corrections(
+    report: &mut serde_json::Value,
+    contact: &ContactInput,
+    corrections: &FilmCorrections,
+) {
+    let martin = martin_film_m(contact);
+    for model in report["models"].as_array_mut().into_iter().flatten() {
+        let Some(central) = model["central_film_m"].as_f64() else {
+            continue;
+        };
+        let factors = corrections.factors(contact, central as f32);
+        let corrected = |h: f64| corrected_film_m(h as f32, martin, factors.product());
+        model["correction_factors"] =
+            json!({"thermal": factors.thermal, "starvation": factors.starvation});
+        model["central_film_corrected_m"] = json!(corrected(central));
+        model["min_film_corrected_m"] = json!(model["min_film_m"].as_f64().map(corrected));
+    }
+    report["film_corrections"] = json!({
+        "thermal": corrections.thermal.map(|t| json!({
+            "temperature_viscosity_per_k": t.temperature_viscosity_per_k(),
+            "thermal_conductivity_w_per_m_k": t.conductivity_w_per_m_k(),
+            "thermal_loading_number": t.loading_number(contact),
+        })),
+        "starvation": corrections.starvation.map(|s| json!({
+            "oil_layer_m": s.oil_layer_m(),
+            "starvation_exponent": s.transition_exponent(),
+        })),
+    });
+}
+
 /// Every film model's answer for one contact.
 fn report(contact: &ContactInput) -> serde_json::Value {
     let hertz = HertzLineContact::new(
@@ -287,6 +321,39 @@ fn print_human(title: &str, r: &serde_json::Value) {
             err
         );
     }
+    print_corrections(r);
+}
+
+/// The corrections' lines of `print_human`: per model φ_T, φ_S and the corrected central film,
+/// when the bearing file switches a correction on.
+fn print_corrections(r: &serde_json::Value) {
+    let c = &r["film_corrections"];
+    if c["thermal"].is_null() && c["starvation"].is_null() {
+        return;
+    }
+    let f = |v: &serde_json::Value| v.as_f64().unwrap_or(f64::NAN);
+    if !c["thermal"].is_null() {
+        println!(
+            "  thermal loading number L = {:.3} (docs/physics.md §5.4)",
+            f(&c["thermal"]["thermal_loading_number"])
+        );
+    }
+    println!(
+        "  {:<14} {:>8} {:>8} {:>22}",
+        "corrected", "φ_T", "φ_S", "central (nm)"
+    );
+    for m in r["models"].as_array().into_iter().flatten() {
+        if m["central_film_corrected_m"].is_null() {
+            continue;
+        }
+        println!(
+            "  {:<14} {:>8.4} {:>8.4} {:>22.1}",
+            m["name"].as_str().unwrap_or("?"),
+            f(&m["correction_factors"]["thermal"]),
+            f(&m["correction_factors"]["starvation"]),
+            f(&m["central_film_corrected_m"]) * 1e9
+        );
+    }
 }
 
 /// Run `bearing film`.
@@ -314,8 +381,11 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
         // stricter, but each is checked.
         check_hertz("--roller-load", &inner_contact)?;
         check_hertz("--roller-load", &params.contact_input(true, load, speed))?;
-        let inner = report(&inner_contact);
-        let outer = report(&params.contact_input(true, load, speed));
+        let outer_contact = params.contact_input(true, load, speed);
+        let mut inner = report(&inner_contact);
+        let mut outer = report(&outer_contact);
+        add_corrections(&mut inner, &inner_contact, params.film_corrections());
+        add_corrections(&mut outer, &outer_contact, params.film_corrections());
         maybe_plot(
             &args,
             &inner_contact,
@@ -366,7 +436,8 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
     if !contact.is_valid() {
         bail!("the contact is not valid in f32 (a value overflows or underflows single precision)");
     }
-    let r = report(&contact);
+    let mut r = report(&contact);
+    add_corrections(&mut r, &contact, &FilmCorrections::OFF);
     maybe_plot(&args, &contact, "line contact")?;
     if args.json {
         print_json(&r)

@@ -130,11 +130,14 @@ fn to_json(s: &Solution, film: &str) -> serde_json::Value {
         "force_residual_n": s.residual_n,
         "iterations": s.iterations,
         "max_roller_load_n": s.step.max_roller_load_n(),
+        "centrifugal_force_n": s.step.centrifugal_force_n,
         "stiffness_n_per_m": k,
         "stiffness_full": s.step.stiffness,
         "rollers": s.step.rollers.iter().map(|r| json!({
             "angle_rad": r.angle_rad,
             "load_n": r.load_n,
+            "load_in_n": r.load_n,
+            "load_out_n": r.load_n + s.step.centrifugal_force_n,
             "approach_m": r.approach_m,
             "central_film_in_m": r.central_film_in_m,
             "central_film_out_m": r.central_film_out_m,
@@ -166,6 +169,12 @@ fn print_human(title: &str, s: &Solution) {
         k[1][1] * 1e-6,
         s.step.max_roller_load_n()
     );
+    if s.step.centrifugal_force_n > 0.0 {
+        println!(
+            "  centrifugal force per roller F_c = {:.1} N: each outer contact carries load + F_c",
+            s.step.centrifugal_force_n
+        );
+    }
     println!(
         "  {:>6} {:>9} {:>10} {:>10} {:>10} {:>12}  regime",
         "roller", "angle°", "load N", "h_in nm", "h_out nm", "k N/µm"
