@@ -74,6 +74,18 @@ pub struct BearingOutput<const Z: usize> {
     pub stiffness: [[f32; 4]; 4],
     /// Damping −∂(F_x, F_y)/∂(ẋ, ẏ) (N·s/m).
     pub damping_n_s_per_m: [[f32; 2]; 2],
+    /// Friction torque on the inner ring (N·m; docs/physics.md §8.4), filled by
+    /// [`Bearing::friction`](crate::Bearing::friction) (0 until then, and for the dry model).
+    pub friction_torque_nm: f32,
+    /// Power loss of the bearing's roller–race contacts (W).
+    pub power_loss_w: f32,
+    /// The power loss split into [rolling, viscous, boundary] (W).
+    pub power_loss_split_w: [f32; 3],
+    /// Film ratios [λ_in, λ_out] = h/σ of each roller's contacts (central film over the
+    /// composite roughness; docs/physics.md §8.1), filled by
+    /// [`Bearing::friction`](crate::Bearing::friction) like the friction (outside
+    /// [`RollerOutput`], which the step writes whole).
+    pub lambda: [[f32; 2]; Z],
     /// Per-roller states.
     pub rollers: [RollerOutput; Z],
 }
@@ -85,6 +97,10 @@ impl<const Z: usize> BearingOutput<Z> {
         moment_nm: [0.0; 2],
         stiffness: [[0.0; 4]; 4],
         damping_n_s_per_m: [[0.0; 2]; 2],
+        friction_torque_nm: 0.0,
+        power_loss_w: 0.0,
+        power_loss_split_w: [0.0; 3],
+        lambda: [[0.0; 2]; Z],
         rollers: [RollerOutput::ZERO; Z],
     };
 
@@ -95,6 +111,10 @@ impl<const Z: usize> BearingOutput<Z> {
             moment_nm: self.moment_nm,
             stiffness: self.stiffness,
             damping_n_s_per_m: self.damping_n_s_per_m,
+            friction_torque_nm: self.friction_torque_nm,
+            power_loss_w: self.power_loss_w,
+            power_loss_split_w: self.power_loss_split_w,
+            lambda: &self.lambda,
             rollers: &self.rollers,
         }
     }
@@ -126,6 +146,15 @@ pub struct OutputView<'a> {
     pub stiffness: [[f32; 4]; 4],
     /// Damping −∂(F_x, F_y)/∂(ẋ, ẏ) (N·s/m).
     pub damping_n_s_per_m: [[f32; 2]; 2],
+    /// Friction torque on the inner ring (N·m; docs/physics.md §8.4), filled by
+    /// [`Bearing::friction`](crate::Bearing::friction) (0 until then, and for the dry model).
+    pub friction_torque_nm: f32,
+    /// Power loss of the bearing's roller–race contacts (W).
+    pub power_loss_w: f32,
+    /// The power loss split into [rolling, viscous, boundary] (W).
+    pub power_loss_split_w: [f32; 3],
+    /// Film ratios [λ_in, λ_out] of each roller's contacts.
+    pub lambda: &'a [[f32; 2]],
     /// Per-roller states, one per roller.
     pub rollers: &'a [RollerOutput],
 }

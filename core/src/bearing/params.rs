@@ -3,6 +3,7 @@
 use crate::contact::ContactLaw;
 use crate::error::{in_range, ParamError};
 use crate::film::ContactInput;
+use crate::friction::FrictionParams;
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material};
 
 /// Everything that defines a lubricated roller bearing.
@@ -13,6 +14,7 @@ pub struct BearingParams {
     pub(super) lubricant: Lubricant,
     pub(super) law: ContactLaw,
     pub(super) damping_factor_s: f32,
+    pub(super) friction: FrictionParams,
 }
 
 impl BearingParams {
@@ -33,7 +35,19 @@ impl BearingParams {
             lubricant,
             law,
             damping_factor_s: in_range("damping_factor_s", damping_factor_s, 0.0, 1.0e-3)?,
+            friction: FrictionParams::DEFAULT,
         })
+    }
+
+    /// The same bearing with the friction model's parameters `friction` (the constructor
+    /// gives [`FrictionParams::DEFAULT`]).
+    pub fn with_friction(self, friction: FrictionParams) -> Self {
+        Self { friction, ..self }
+    }
+
+    /// The friction model's parameters.
+    pub fn friction(&self) -> &FrictionParams {
+        &self.friction
     }
 
     /// Geometry.
