@@ -18,6 +18,14 @@ pub struct StepSnapshot {
     pub stiffness: [[f32; 4]; 4],
     /// −∂F/∂(ẋ, ẏ) (N·s/m).
     pub damping_n_s_per_m: [[f32; 2]; 2],
+    /// Friction torque on the inner ring (N·m).
+    pub friction_torque_nm: f32,
+    /// Power loss (W).
+    pub power_loss_w: f32,
+    /// Power loss split [rolling, viscous, boundary] (W).
+    pub power_loss_split_w: [f32; 3],
+    /// Film ratios [λ_in, λ_out] per roller.
+    pub lambda: Vec<[f32; 2]>,
     /// Per roller.
     pub rollers: Vec<RollerOutput>,
 }
@@ -41,6 +49,10 @@ impl From<OutputView<'_>> for StepSnapshot {
             moment_nm: o.moment_nm,
             stiffness: o.stiffness,
             damping_n_s_per_m: o.damping_n_s_per_m,
+            friction_torque_nm: o.friction_torque_nm,
+            power_loss_w: o.power_loss_w,
+            power_loss_split_w: o.power_loss_split_w,
+            lambda: o.lambda.to_vec(),
             rollers: o.rollers.to_vec(),
         }
     }

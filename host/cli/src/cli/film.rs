@@ -8,7 +8,7 @@ use anyhow::{bail, Context};
 use bearing_core::contact::HertzLineContact;
 use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::film::{moes_central, Hydrodynamic, LnGroups};
-use bearing_core::{ContactInput, FilmModel, FilmSource, Regime, Regression};
+use bearing_core::{ContactInput, FilmModel, FilmSource, FrictionParams, Regime, Regression};
 use bearing_ehl::{self as ehl, ContactCase, EhlError, EhlSolution, SolverOptions};
 use clap::Args;
 use serde_json::json;
@@ -189,8 +189,33 @@ pub(super) fn numerical_solution(contact: &ContactInput) -> Result<EhlSolution, 
     .and_then(|case| ehl::solve(&case, &SolverOptions::default()))
 }
 
-/// Every film model's answer for one contact.
-fn report(contact: &ContactInput) -> serde_json::Value {
+/// The friction of `contact` (docs/physics.md §8) at the numerical central film, or the
+/// regression's when the solver did not converge.
+fn friction_report(
+    contact: &ContactInput,
+    friction: &FrictionParams,
+    numerical_film_m: Option<f64>,
+) -> serde_json::Value {
+    let (film, film_from) = match numerical_film_m {
+        Some(h) => (h as f32, "numerical"),
+        None => (Regression.film(contact).central_m, "regression"),
+    };
+    let c = friction.contact(contact, film);
+    json!({
+        "film_from": film_from,
+        "lambda": c.lambda,
+        "lubrication": c.lubrication().name(),
+        "friction_coefficient": c.friction_coefficient(),
+        "slide_to_roll_ratio": friction.slide_to_roll_ratio(),
+        "asperity_load_n": c.asperity_load_n,
+        "rolling_n": c.rolling_n,
+        "viscous_n": c.viscous_n,
+        "boundary_n": c.boundary_n,
+    })
+}
+
+/// Every film model's answer for one contact, and its friction.
+fn report(contact: &ContactInput, friction: &FrictionParams) -> serde_json::Value {
     let hertz = HertzLineContact::new(
         contact.load_per_length_n_per_m(),
         contact.reduced_radius_m,
@@ -222,7 +247,11 @@ fn report(contact: &ContactInput) -> serde_json::Value {
                          "fell_back": false, "error": e.to_string()})
         }
     };
+    let friction = friction_report(contact, friction, reference);
     json!({
+        "lambda": friction["lambda"],
+        "friction_coefficient": friction["friction_coefficient"],
+        "friction": friction,
         "input": {
             "load_n": contact.load_n, "length_m": contact.length_m,
             "entrainment_speed_m_s": contact.entrainment_speed_m_s, "reduced_radius_m": contact.reduced_radius_m,
@@ -260,6 +289,20 @@ fn print_human(title: &str, r: &serde_json::Value) {
         "  Hertz: half-width b = {:.2} µm, max pressure p_h = {:.3} GPa",
         f(&r["hertz"]["half_width_m"]) * 1e6,
         f(&r["hertz"]["max_pressure_pa"]) * 1e-9
+    );
+    let fr = &r["friction"];
+    println!(
+        "  λ = h_c/σ = {:.2} ({}, {} film)  friction coefficient {:.4} at slide/roll {}: \
+         rolling {:.3} N, viscous {:.3} N, boundary {:.3} N, asperity load {:.2} N",
+        f(&fr["lambda"]),
+        fr["lubrication"].as_str().unwrap_or("?"),
+        fr["film_from"].as_str().unwrap_or("?"),
+        f(&fr["friction_coefficient"]),
+        f(&fr["slide_to_roll_ratio"]),
+        f(&fr["rolling_n"]),
+        f(&fr["viscous_n"]),
+        f(&fr["boundary_n"]),
+        f(&fr["asperity_load_n"])
     );
     println!(
         "  {:<14} {:>14} {:>14} {:>14}",
@@ -314,8 +357,8 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
         // stricter, but each is checked.
         check_hertz("--roller-load", &inner_contact)?;
         check_hertz("--roller-load", &params.contact_input(true, load, speed))?;
-        let inner = report(&inner_contact);
-        let outer = report(&params.contact_input(true, load, speed));
+        let inner = report(&inner_contact, params.friction());
+        let outer = report(&params.contact_input(true, load, speed), params.friction());
         maybe_plot(
             &args,
             &inner_contact,
@@ -366,7 +409,7 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
     if !contact.is_valid() {
         bail!("the contact is not valid in f32 (a value overflows or underflows single precision)");
     }
-    let r = report(&contact);
+    let r = report(&contact, &FrictionParams::DEFAULT);
     maybe_plot(&args, &contact, "line contact")?;
     if args.json {
         print_json(&r)
