@@ -3,7 +3,7 @@
 use crate::error::{in_range, ParamError};
 
 /// Roughness, boundary-film, rheology and thermal parameters of the friction model, and the
-/// slide-to-roll ratio of the roller contacts. Built only through [`FrictionParams::new`]
+/// slide-to-roll ratio of the roller contacts. Built only through [`FrictionDesign::params`]
 /// (or [`FrictionParams::DEFAULT`]), which checks every field.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FrictionParams {

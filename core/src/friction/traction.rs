@@ -32,7 +32,7 @@ const LN_LARGE_ARGUMENT: f32 = 20.0;
 /// pressure of peak `peak_pressure_pa` over half-width b (`half_width_m`) and length l: the
 /// shear stress τ = τ₀·asinh(η(p)·u_s/(h·τ₀)) with the Barus viscosity η = η₀·e^{αp}
 /// (Johnson & Tevaarwerk, Proc. R. Soc. A 356 (1977) 215–236), integrated over the contact
-/// by [`NODES`].
+/// by a 4-node Gauss–Legendre rule (`NODES`).
 #[allow(clippy::too_many_arguments)]
 pub fn isothermal_eyring_n(
     eyring_stress_pa: f32,
