@@ -49,7 +49,9 @@
 //!    (regression formulas, the neural networks, Martin's hydrodynamic film at separation);
 //! 4. **contact** — slice loads and the roller load, solved together with the film, which adds
 //!    to the approach ([`contact`], docs/physics.md §3–§4);
-//! 5. **bearing** — forces, moments, stiffness and damping matrices summed over the rollers.
+//! 5. **bearing** — forces, moments, stiffness and damping matrices summed over the rollers;
+//! 6. **friction** — film ratio λ, asperity load, rolling, viscous and boundary friction of
+//!    every contact, and the bearing's friction torque and power loss ([`friction`]).
 //!
 //! Equations and conventions: `docs/physics.md` (sections cited in each module).
 #![no_std]
@@ -64,6 +66,7 @@ pub mod bearing;
 pub mod contact;
 mod error;
 pub mod film;
+pub mod friction;
 pub mod kinematics;
 mod lanes;
 // Public only for the firmware's profile of their cost (`hil-sim/firmware`); not part of the API.
@@ -77,4 +80,5 @@ pub use bearing::{
 pub use contact::ContactLaw;
 pub use error::{Allowed, ParamError};
 pub use film::{ContactInput, Film, FilmModel, FilmSource, Regime, Regression};
+pub use friction::{FrictionDesign, FrictionParams, Lubrication};
 pub use params::{BearingDesign, BearingGeometry, Crown, Lubricant, Material, OperatingState};

@@ -68,6 +68,7 @@ fn a_trace_at_static_equilibrium_replays_to_the_applied_load() {
         realtime: None,
         realtime_fallback: false,
         pause_probe_s: 0.0,
+        strict_timing: false,
     };
     let run = replay(
         &trace,

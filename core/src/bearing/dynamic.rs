@@ -53,6 +53,8 @@ pub trait DynBearing {
         relative_tolerance: f32,
         max_iterations: usize,
     ) -> Equilibrium;
+    /// [`Bearing::friction`].
+    fn friction(&mut self, shaft_speed_rad_s: f32) -> Result<OutputView<'_>, ParamError>;
     /// [`Bearing::reset`].
     fn reset(&mut self);
     /// A boxed copy, same committed state.
@@ -110,6 +112,9 @@ impl<const Z: usize, const S: usize> DynBearing for Bearing<Z, S> {
             relative_tolerance,
             max_iterations,
         )
+    }
+    fn friction(&mut self, shaft_speed_rad_s: f32) -> Result<OutputView<'_>, ParamError> {
+        Bearing::friction(self, shaft_speed_rad_s).map(|o| o.view())
     }
     fn reset(&mut self) {
         Bearing::reset(self)

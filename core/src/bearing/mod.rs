@@ -21,6 +21,7 @@ mod dynamic;
 mod equilibrium;
 mod film_kind;
 mod film_table;
+mod friction;
 mod lockstep;
 #[cfg(feature = "nalgebra")]
 mod nalgebra;
@@ -568,6 +569,43 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         if (span.0 <= span.1) & (pass != Pass::Trial) {
             self.load_span = span;
         }
+    }
+
+    /// The friction of the last computed output (docs/physics.md §8): fills its rollers' film
+    /// ratios λ_in, λ_out and its friction torque, power loss and split at the shaft speed ω
+    /// of that step (`shaft_speed_rad_s`, rad/s), and returns the output. The same work for
+    /// every input, ≈ 2 k Cortex-M4 instructions per roller: it is kept out of
+    /// [`Bearing::advance`] so that the real-time step costs what it did, and runs at the rate
+    /// the friction is wanted. The dry model has no film and no friction: its output keeps
+    /// zeros there.
+    ///
+    /// ```
+    /// use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
+    /// let mut bearing = Bearing::<12, 10>::new(BearingDesign::NU205.params()?, FilmKind::Regression)?;
+    /// let state = OperatingState::new([0.0, -4.0e-6], [0.0; 2], [0.0; 2], 1000.0)?;
+    /// bearing.settle(&state, bearing_core::bearing::SETTLE_STEPS)?;
+    /// let out = bearing.friction(state.shaft_speed_rad_s)?;
+    /// assert!(out.power_loss_w > 0.0);
+    /// assert!((out.power_loss_w / (out.friction_torque_nm * 1000.0) - 1.0).abs() < 1e-5);
+    /// # Ok::<(), bearing_core::ParamError>(())
+    /// ```
+    pub fn friction(&mut self, shaft_speed_rad_s: f32) -> Result<&BearingOutput<Z>, ParamError> {
+        in_range(
+            "shaft_speed_rad_s",
+            shaft_speed_rad_s,
+            -crate::params::MAX_SHAFT_SPEED_RAD_S,
+            crate::params::MAX_SHAFT_SPEED_RAD_S,
+        )?;
+        if self.film != FilmKind::Dry {
+            let [inner, outer] = self.contact_contexts(shaft_speed_rad_s);
+            friction::friction_pass(
+                &self.params,
+                &[inner.template, outer.template],
+                &mut self.output,
+                shaft_speed_rad_s,
+            );
+        }
+        Ok(&self.output)
     }
 
     /// Converge the warm start at `state` before a real-time loop, or for quasi-static use

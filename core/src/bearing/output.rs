@@ -77,6 +77,18 @@ pub struct BearingOutput<const Z: usize> {
     /// Each roller's centrifugal force on the outer race F_c (N; 0 when the bearing leaves it
     /// out, docs/physics.md §4.1): every roller's outer contact carries its `load_n` + F_c.
     pub centrifugal_force_n: f32,
+    /// Friction torque on the inner ring (N·m; docs/physics.md §8.4), filled by
+    /// [`Bearing::friction`](crate::Bearing::friction) (0 until then, and for the dry model).
+    pub friction_torque_nm: f32,
+    /// Power loss of the bearing's roller–race contacts (W).
+    pub power_loss_w: f32,
+    /// The power loss split into [rolling, viscous, boundary] (W).
+    pub power_loss_split_w: [f32; 3],
+    /// Film ratios [λ_in, λ_out] = h/σ of each roller's contacts (central film over the
+    /// composite roughness; docs/physics.md §8.1), filled by
+    /// [`Bearing::friction`](crate::Bearing::friction) like the friction (outside
+    /// [`RollerOutput`], which the step writes whole).
+    pub lambda: [[f32; 2]; Z],
     /// Per-roller states.
     pub rollers: [RollerOutput; Z],
 }
@@ -89,6 +101,10 @@ impl<const Z: usize> BearingOutput<Z> {
         stiffness: [[0.0; 4]; 4],
         damping_n_s_per_m: [[0.0; 2]; 2],
         centrifugal_force_n: 0.0,
+        friction_torque_nm: 0.0,
+        power_loss_w: 0.0,
+        power_loss_split_w: [0.0; 3],
+        lambda: [[0.0; 2]; Z],
         rollers: [RollerOutput::ZERO; Z],
     };
 
@@ -100,6 +116,10 @@ impl<const Z: usize> BearingOutput<Z> {
             stiffness: self.stiffness,
             damping_n_s_per_m: self.damping_n_s_per_m,
             centrifugal_force_n: self.centrifugal_force_n,
+            friction_torque_nm: self.friction_torque_nm,
+            power_loss_w: self.power_loss_w,
+            power_loss_split_w: self.power_loss_split_w,
+            lambda: &self.lambda,
             rollers: &self.rollers,
         }
     }
@@ -133,6 +153,15 @@ pub struct OutputView<'a> {
     pub damping_n_s_per_m: [[f32; 2]; 2],
     /// Each roller's centrifugal force on the outer race (N; see [`BearingOutput`]).
     pub centrifugal_force_n: f32,
+    /// Friction torque on the inner ring (N·m; docs/physics.md §8.4), filled by
+    /// [`Bearing::friction`](crate::Bearing::friction) (0 until then, and for the dry model).
+    pub friction_torque_nm: f32,
+    /// Power loss of the bearing's roller–race contacts (W).
+    pub power_loss_w: f32,
+    /// The power loss split into [rolling, viscous, boundary] (W).
+    pub power_loss_split_w: [f32; 3],
+    /// Film ratios [λ_in, λ_out] of each roller's contacts.
+    pub lambda: &'a [[f32; 2]],
     /// Per-roller states, one per roller.
     pub rollers: &'a [RollerOutput],
 }

@@ -4,6 +4,7 @@ use crate::contact::ContactLaw;
 use crate::error::{in_range, ParamError};
 use crate::film::corrections::FilmCorrections;
 use crate::film::ContactInput;
+use crate::friction::FrictionParams;
 use crate::params::{reduced_modulus, BearingGeometry, Lubricant, Material};
 
 /// Density of bearing steel (kg/m³), the usual roller density.
@@ -20,6 +21,7 @@ pub struct BearingParams {
     pub(super) film_corrections: FilmCorrections,
     /// Density of the rollers (kg/m³) when the bearing includes their centrifugal force.
     pub(super) centrifugal_density_kg_m3: Option<f32>,
+    pub(super) friction: FrictionParams,
 }
 
 impl BearingParams {
@@ -42,6 +44,7 @@ impl BearingParams {
             damping_factor_s: in_range("damping_factor_s", damping_factor_s, 0.0, 1.0e-3)?,
             film_corrections: FilmCorrections::OFF,
             centrifugal_density_kg_m3: None,
+            friction: FrictionParams::DEFAULT,
         })
     }
 
@@ -90,6 +93,17 @@ impl BearingParams {
     /// The high-speed film corrections applied after the film model.
     pub fn film_corrections(&self) -> &FilmCorrections {
         &self.film_corrections
+    }
+
+    /// The same bearing with the friction model's parameters `friction` (the constructor
+    /// gives [`FrictionParams::DEFAULT`]).
+    pub fn with_friction(self, friction: FrictionParams) -> Self {
+        Self { friction, ..self }
+    }
+
+    /// The friction model's parameters.
+    pub fn friction(&self) -> &FrictionParams {
+        &self.friction
     }
 
     /// Geometry.

@@ -24,6 +24,8 @@ enum Command {
     Film(cli::film::FilmArgs),
     /// Static equilibrium of a bearing under a radial load (lubricated, and dry with --dry).
     Static(cli::statics::StaticArgs),
+    /// Stribeck curve of a bearing: friction torque and power loss against speed.
+    Friction(cli::friction::FrictionArgs),
     /// Flexible-shaft simulator: static, modes, campbell, run, sweep.
     Shaft(cli::shaft::ShaftArgs),
     /// Film training data: generate datasets, check the domain.
@@ -48,6 +50,7 @@ fn main() -> std::process::ExitCode {
     let result: anyhow::Result<()> = match cli.command {
         Command::Film(args) => cli::film::run(args),
         Command::Static(args) => cli::statics::run(args),
+        Command::Friction(args) => cli::friction::run(args),
         Command::Shaft(args) => cli::shaft::run(args),
         Command::Dataset(args) => cli::dataset::run(args),
         Command::Train(args) => cli::train::run(*args),

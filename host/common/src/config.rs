@@ -12,7 +12,7 @@ use bearing_core::film::corrections::{
     FilmCorrections, Starvation, ThermalCorrection, OIL_THERMAL_CONDUCTIVITY_W_PER_M_K,
     VG68_TEMPERATURE_VISCOSITY_PER_K,
 };
-use bearing_core::{BearingDesign, BearingParams, ContactLaw, ParamError};
+use bearing_core::{BearingDesign, BearingParams, ContactLaw, FrictionDesign, ParamError};
 use serde::{Deserialize, Serialize};
 
 use crate::rolling::{MAX_ROLLERS, MIN_ROLLERS};
@@ -39,6 +39,10 @@ pub struct BearingConfig {
     /// High-speed film corrections (docs/physics.md §5.4); off unless switched on.
     #[serde(default)]
     pub film_corrections: FilmCorrectionsConfig,
+    /// Friction model (docs/physics.md §8); every field optional, the core's defaults when
+    /// absent.
+    #[serde(default)]
+    pub friction: FrictionConfig,
 }
 
 /// `[film_corrections]`: the thermal and starvation factors applied after the film model.
@@ -199,6 +203,77 @@ pub struct CaseConfig {
     pub speed_rpm: Option<f32>,
 }
 
+/// `[friction]`: the fields of the core's [`FrictionDesign`], each defaulting to
+/// [`FrictionDesign::DEFAULT`].
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(default, deny_unknown_fields)]
+pub struct FrictionConfig {
+    /// σ (m).
+    pub composite_roughness_m: f32,
+    /// η_s (1/m²).
+    pub asperity_density_m2: f32,
+    /// β (m).
+    pub summit_radius_m: f32,
+    /// τ_b (Pa).
+    pub boundary_shear_strength_pa: f32,
+    /// ζ (–).
+    pub boundary_friction_coefficient: f32,
+    /// τ₀ (Pa).
+    pub eyring_stress_pa: f32,
+    /// β_T (1/K).
+    pub viscosity_temperature_coefficient_k_inv: f32,
+    /// K (W/(m·K)).
+    pub fluid_conductivity_w_mk: f32,
+    /// K′ (W/(m·K)).
+    pub solid_conductivity_w_mk: f32,
+    /// ρ′ (kg/m³).
+    pub solid_density_kg_m3: f32,
+    /// c′ (J/(kg·K)).
+    pub solid_heat_capacity_j_kgk: f32,
+    /// s (–).
+    pub slide_to_roll_ratio: f32,
+}
+
+impl Default for FrictionConfig {
+    fn default() -> Self {
+        let d = FrictionDesign::DEFAULT;
+        Self {
+            composite_roughness_m: d.composite_roughness_m,
+            asperity_density_m2: d.asperity_density_m2,
+            summit_radius_m: d.summit_radius_m,
+            boundary_shear_strength_pa: d.boundary_shear_strength_pa,
+            boundary_friction_coefficient: d.boundary_friction_coefficient,
+            eyring_stress_pa: d.eyring_stress_pa,
+            viscosity_temperature_coefficient_k_inv: d.viscosity_temperature_coefficient_k_inv,
+            fluid_conductivity_w_mk: d.fluid_conductivity_w_mk,
+            solid_conductivity_w_mk: d.solid_conductivity_w_mk,
+            solid_density_kg_m3: d.solid_density_kg_m3,
+            solid_heat_capacity_j_kgk: d.solid_heat_capacity_j_kgk,
+            slide_to_roll_ratio: d.slide_to_roll_ratio,
+        }
+    }
+}
+
+impl FrictionConfig {
+    /// The table as the core's [`FrictionDesign`].
+    pub fn design(&self) -> FrictionDesign {
+        FrictionDesign {
+            composite_roughness_m: self.composite_roughness_m,
+            asperity_density_m2: self.asperity_density_m2,
+            summit_radius_m: self.summit_radius_m,
+            boundary_shear_strength_pa: self.boundary_shear_strength_pa,
+            boundary_friction_coefficient: self.boundary_friction_coefficient,
+            eyring_stress_pa: self.eyring_stress_pa,
+            viscosity_temperature_coefficient_k_inv: self.viscosity_temperature_coefficient_k_inv,
+            fluid_conductivity_w_mk: self.fluid_conductivity_w_mk,
+            solid_conductivity_w_mk: self.solid_conductivity_w_mk,
+            solid_density_kg_m3: self.solid_density_kg_m3,
+            solid_heat_capacity_j_kgk: self.solid_heat_capacity_j_kgk,
+            slide_to_roll_ratio: self.slide_to_roll_ratio,
+        }
+    }
+}
+
 /// The values of `[model] contact_law`.
 pub const CONTACT_LAWS: [&str; 2] = ["palmgren", "lundberg"];
 
@@ -314,7 +389,8 @@ impl BearingConfig {
         let params = self
             .design()?
             .params()?
-            .with_film_corrections(self.film_corrections.corrections()?);
+            .with_film_corrections(self.film_corrections.corrections()?)
+            .with_friction(self.friction.design().params()?);
         let params = if self.model.centrifugal {
             params.with_centrifugal_force(self.model.roller_density_kg_m3)?
         } else {
@@ -400,6 +476,22 @@ mod tests {
             "{shown}"
         );
         assert!(shown.contains("pitch_diameter_m"), "{shown}");
+    }
+
+    #[test]
+    fn friction_table_is_optional_and_its_values_are_checked() {
+        let text = std::fs::read_to_string(bundled("nu205.toml")).unwrap();
+        let (_, params) = BearingConfig::parse(&text, Path::new("nu205.toml")).unwrap();
+        assert_eq!(*params.friction(), bearing_core::FrictionParams::DEFAULT);
+        let rough = format!("{text}\n[friction]\ncomposite_roughness_m = 0.3e-6\n");
+        let (_, params) = BearingConfig::parse(&rough, Path::new("rough.toml")).unwrap();
+        assert_eq!(params.friction().composite_roughness_m(), 0.3e-6);
+        // An oil's conductivity of 1600 W/(m·K) (a metal's order) is refused at its line.
+        let bad = format!("{text}\n[friction]\nfluid_conductivity_w_mk = 1600.0\n");
+        let e = BearingConfig::parse(&bad, Path::new("bad.toml")).unwrap_err();
+        assert_eq!(e.line, Some(line_of(&bad, "fluid_conductivity_w_mk")));
+        assert_eq!(e.field.as_deref(), Some("fluid_conductivity_w_mk"));
+        assert!(e.to_string().contains("[0.01, 10]"), "{e}");
     }
 
     /// The line of `prefix…` in `text` (1-based).

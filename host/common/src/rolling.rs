@@ -21,6 +21,14 @@ pub struct StepSnapshot {
     /// Each roller's centrifugal force on the outer race (N; 0 when left out): a roller's
     /// outer contact carries its `load_n` plus this.
     pub centrifugal_force_n: f32,
+    /// Friction torque on the inner ring (N·m).
+    pub friction_torque_nm: f32,
+    /// Power loss (W).
+    pub power_loss_w: f32,
+    /// Power loss split [rolling, viscous, boundary] (W).
+    pub power_loss_split_w: [f32; 3],
+    /// Film ratios [λ_in, λ_out] per roller.
+    pub lambda: Vec<[f32; 2]>,
     /// Per roller.
     pub rollers: Vec<RollerOutput>,
 }
@@ -45,6 +53,10 @@ impl From<OutputView<'_>> for StepSnapshot {
             stiffness: o.stiffness,
             damping_n_s_per_m: o.damping_n_s_per_m,
             centrifugal_force_n: o.centrifugal_force_n,
+            friction_torque_nm: o.friction_torque_nm,
+            power_loss_w: o.power_loss_w,
+            power_loss_split_w: o.power_loss_split_w,
+            lambda: o.lambda.to_vec(),
             rollers: o.rollers.to_vec(),
         }
     }

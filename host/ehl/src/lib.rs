@@ -48,6 +48,7 @@ pub mod rheology;
 pub mod solution;
 #[cfg(test)]
 mod tests_reference;
+pub mod traction;
 
 pub use case::ContactCase;
 pub use driver::Solver;

@@ -9,7 +9,7 @@ use bearing_core::contact::HertzLineContact;
 use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::film::corrections::{corrected_film_m, FilmCorrections};
 use bearing_core::film::{martin_film_m, moes_central, Hydrodynamic, LnGroups};
-use bearing_core::{ContactInput, FilmModel, FilmSource, Regime, Regression};
+use bearing_core::{ContactInput, FilmModel, FilmSource, FrictionParams, Regime, Regression};
 use bearing_ehl::{self as ehl, ContactCase, EhlError, EhlSolution, SolverOptions};
 use clap::Args;
 use serde_json::json;
@@ -223,8 +223,33 @@ fn add_corrections(
     });
 }
 
-/// Every film model's answer for one contact.
-fn report(contact: &ContactInput) -> serde_json::Value {
+/// The friction of `contact` (docs/physics.md §8) at the numerical central film, or the
+/// regression's when the solver did not converge.
+fn friction_report(
+    contact: &ContactInput,
+    friction: &FrictionParams,
+    numerical_film_m: Option<f64>,
+) -> serde_json::Value {
+    let (film, film_from) = match numerical_film_m {
+        Some(h) => (h as f32, "numerical"),
+        None => (Regression.film(contact).central_m, "regression"),
+    };
+    let c = friction.contact(contact, film);
+    json!({
+        "film_from": film_from,
+        "lambda": c.lambda,
+        "lubrication": c.lubrication().name(),
+        "friction_coefficient": c.friction_coefficient(),
+        "slide_to_roll_ratio": friction.slide_to_roll_ratio(),
+        "asperity_load_n": c.asperity_load_n,
+        "rolling_n": c.rolling_n,
+        "viscous_n": c.viscous_n,
+        "boundary_n": c.boundary_n,
+    })
+}
+
+/// Every film model's answer for one contact, and its friction.
+fn report(contact: &ContactInput, friction: &FrictionParams) -> serde_json::Value {
     let hertz = HertzLineContact::new(
         contact.load_per_length_n_per_m(),
         contact.reduced_radius_m,
@@ -256,7 +281,11 @@ fn report(contact: &ContactInput) -> serde_json::Value {
                          "fell_back": false, "error": e.to_string()})
         }
     };
+    let friction = friction_report(contact, friction, reference);
     json!({
+        "lambda": friction["lambda"],
+        "friction_coefficient": friction["friction_coefficient"],
+        "friction": friction,
         "input": {
             "load_n": contact.load_n, "length_m": contact.length_m,
             "entrainment_speed_m_s": contact.entrainment_speed_m_s, "reduced_radius_m": contact.reduced_radius_m,
@@ -294,6 +323,20 @@ fn print_human(title: &str, r: &serde_json::Value) {
         "  Hertz: half-width b = {:.2} µm, max pressure p_h = {:.3} GPa",
         f(&r["hertz"]["half_width_m"]) * 1e6,
         f(&r["hertz"]["max_pressure_pa"]) * 1e-9
+    );
+    let fr = &r["friction"];
+    println!(
+        "  λ = h_c/σ = {:.2} ({}, {} film)  friction coefficient {:.4} at slide/roll {}: \
+         rolling {:.3} N, viscous {:.3} N, boundary {:.3} N, asperity load {:.2} N",
+        f(&fr["lambda"]),
+        fr["lubrication"].as_str().unwrap_or("?"),
+        fr["film_from"].as_str().unwrap_or("?"),
+        f(&fr["friction_coefficient"]),
+        f(&fr["slide_to_roll_ratio"]),
+        f(&fr["rolling_n"]),
+        f(&fr["viscous_n"]),
+        f(&fr["boundary_n"]),
+        f(&fr["asperity_load_n"])
     );
     println!(
         "  {:<14} {:>14} {:>14} {:>14}",
@@ -382,8 +425,8 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
         check_hertz("--roller-load", &inner_contact)?;
         check_hertz("--roller-load", &params.contact_input(true, load, speed))?;
         let outer_contact = params.contact_input(true, load, speed);
-        let mut inner = report(&inner_contact);
-        let mut outer = report(&outer_contact);
+        let mut inner = report(&inner_contact, params.friction());
+        let mut outer = report(&outer_contact, params.friction());
         add_corrections(&mut inner, &inner_contact, params.film_corrections());
         add_corrections(&mut outer, &outer_contact, params.film_corrections());
         maybe_plot(
@@ -436,7 +479,7 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
     if !contact.is_valid() {
         bail!("the contact is not valid in f32 (a value overflows or underflows single precision)");
     }
-    let mut r = report(&contact);
+    let mut r = report(&contact, &FrictionParams::DEFAULT);
     add_corrections(&mut r, &contact, &FilmCorrections::OFF);
     maybe_plot(&args, &contact, "line contact")?;
     if args.json {

@@ -10,6 +10,7 @@ pub mod export;
 pub mod film;
 mod film_plot;
 pub mod fmu;
+pub mod friction;
 pub mod shaft;
 pub mod statics;
 pub mod train;

@@ -85,14 +85,18 @@ fn check_case(
     Ok(())
 }
 
-struct Solution {
+pub(super) struct Solution {
     displacement_m: [f32; 2],
     residual_n: f32,
     iterations: usize,
-    step: StepSnapshot,
+    pub(super) step: StepSnapshot,
 }
 
-fn solve(bearing: &mut dyn DynBearing, load_n: f32, speed: f32) -> anyhow::Result<Solution> {
+pub(super) fn solve(
+    bearing: &mut dyn DynBearing,
+    load_n: f32,
+    speed: f32,
+) -> anyhow::Result<Solution> {
     let lubricated = bearing.film() != FilmKind::Dry;
     // Roller 0 on the load line (−y) gives the symmetric load zone of the textbooks.
     bearing.set_cage_angle(-std::f32::consts::FRAC_PI_2)?;
@@ -113,7 +117,8 @@ fn solve(bearing: &mut dyn DynBearing, load_n: f32, speed: f32) -> anyhow::Resul
         displacement_m: eq.displacement_m,
         ..start
     };
-    let step = StepSnapshot::from(bearing.advance(&state, 0.0)?);
+    bearing.advance(&state, 0.0)?;
+    let step = StepSnapshot::from(bearing.friction(speed)?);
     Ok(Solution {
         displacement_m: eq.displacement_m,
         residual_n: eq.residual_n,
@@ -124,8 +129,12 @@ fn solve(bearing: &mut dyn DynBearing, load_n: f32, speed: f32) -> anyhow::Resul
 
 fn to_json(s: &Solution, film: &str) -> serde_json::Value {
     let k = s.step.radial_stiffness_n_per_m();
+    let [rolling, viscous, boundary] = s.step.power_loss_split_w;
     json!({
         "film_model": film,
+        "friction_torque_nm": s.step.friction_torque_nm,
+        "power_loss_w": s.step.power_loss_w,
+        "power_loss_split_w": {"rolling": rolling, "viscous": viscous, "boundary": boundary},
         "displacement_m": s.displacement_m,
         "force_residual_n": s.residual_n,
         "iterations": s.iterations,
@@ -133,7 +142,7 @@ fn to_json(s: &Solution, film: &str) -> serde_json::Value {
         "centrifugal_force_n": s.step.centrifugal_force_n,
         "stiffness_n_per_m": k,
         "stiffness_full": s.step.stiffness,
-        "rollers": s.step.rollers.iter().map(|r| json!({
+        "rollers": s.step.rollers.iter().zip(&s.step.lambda).map(|(r, [lambda_in, lambda_out])| json!({
             "angle_rad": r.angle_rad,
             "load_n": r.load_n,
             "load_in_n": r.load_n,
@@ -143,6 +152,8 @@ fn to_json(s: &Solution, film: &str) -> serde_json::Value {
             "central_film_out_m": r.central_film_out_m,
             "min_film_in_m": r.min_film_in_m,
             "min_film_out_m": r.min_film_out_m,
+            "lambda_in": lambda_in,
+            "lambda_out": lambda_out,
             "contact_stiffness_n_per_m": r.contact_stiffness_n_per_m,
             "roller_stiffness_n_per_m": r.roller_stiffness_n_per_m,
             "regime": r.regime_in.name(),
@@ -175,18 +186,25 @@ fn print_human(title: &str, s: &Solution) {
             s.step.centrifugal_force_n
         );
     }
+    let [rolling, viscous, boundary] = s.step.power_loss_split_w;
     println!(
-        "  {:>6} {:>9} {:>10} {:>10} {:>10} {:>12}  regime",
-        "roller", "angle°", "load N", "h_in nm", "h_out nm", "k N/µm"
+        "  friction torque {:.4} N·m, power loss {:.2} W (rolling {:.2}, viscous {:.2}, boundary {:.2} W)",
+        s.step.friction_torque_nm, s.step.power_loss_w, rolling, viscous, boundary
     );
-    for (j, r) in s.step.rollers.iter().enumerate() {
+    println!(
+        "  {:>6} {:>9} {:>10} {:>10} {:>10} {:>7} {:>7} {:>12}  regime",
+        "roller", "angle°", "load N", "h_in nm", "h_out nm", "λ_in", "λ_out", "k N/µm"
+    );
+    for (j, (r, [lambda_in, lambda_out])) in s.step.rollers.iter().zip(&s.step.lambda).enumerate() {
         println!(
-            "  {:>6} {:>9.1} {:>10.2} {:>10.1} {:>10.1} {:>12.2}  {}",
+            "  {:>6} {:>9.1} {:>10.2} {:>10.1} {:>10.1} {:>7.2} {:>7.2} {:>12.2}  {}",
             j,
             r.angle_rad.to_degrees(),
             r.load_n,
             r.central_film_in_m * 1e9,
             r.central_film_out_m * 1e9,
+            lambda_in,
+            lambda_out,
             r.roller_stiffness_n_per_m * 1e-6,
             r.regime_in.name()
         );

@@ -1,0 +1,177 @@
+//! The friction model against independent references: numerical quadrature of the Gaussian
+//! and of the Eyring shear stress over the Hertz pressure, and the regime thresholds.
+
+use super::asperity::{f2, f5_2, LAMBDA_MAX};
+use super::*;
+use crate::params::BearingDesign;
+
+/// F_n(λ) = ∫_λ^∞ (s − λ)ⁿ φ(s) ds by Simpson's rule in f64 on s − λ ∈ [0, 14].
+fn gaussian_integral(n: f64, lambda: f64) -> f64 {
+    let steps = 20_000;
+    let h = 14.0 / steps as f64;
+    let f = |t: f64| {
+        let s = lambda + t;
+        t.powf(n) * (-0.5 * s * s).exp() / (2.0 * core::f64::consts::PI).sqrt()
+    };
+    let mut sum = f(0.0) + f(14.0);
+    for i in 1..steps {
+        sum += f(i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
+    }
+    sum * h / 3.0
+}
+
+#[test]
+fn gt_integrals_match_quadrature() {
+    // Closed forms at λ = 0: F₂(0) = 1/2, F₅/₂(0) = 2^{5/4}·Γ(7/4)/(2√π) = 0.616 634.
+    assert!((gaussian_integral(2.0, 0.0) - 0.5).abs() < 1e-9);
+    assert!((gaussian_integral(2.5, 0.0) - 0.616_634_2).abs() < 1e-6);
+    let mut worst = [0.0f64; 2];
+    for i in 0..120 {
+        let lambda = i as f32 * 0.05;
+        let exact = [
+            gaussian_integral(2.0, f64::from(lambda)),
+            gaussian_integral(2.5, f64::from(lambda)),
+        ];
+        let fit = [f2(lambda), f5_2(lambda)];
+        for k in 0..2 {
+            let err = (f64::from(fit[k]) / exact[k] - 1.0).abs();
+            worst[k] = worst[k].max(err);
+        }
+    }
+    assert!(
+        worst[0] < 0.01 && worst[1] < 0.01,
+        "worst relative errors {worst:?}"
+    );
+    // Beyond the fits' range there is no asperity contact.
+    assert_eq!(f2(LAMBDA_MAX + 0.1), 0.0);
+    assert_eq!(f5_2(100.0), 0.0);
+    assert!(f5_2(LAMBDA_MAX - 0.01) < 1e-9);
+}
+
+fn nu205_inner(load_n: f32, shaft_speed_rad_s: f32) -> ContactInput {
+    BearingDesign::NU205
+        .params()
+        .unwrap()
+        .contact_input(false, load_n, shaft_speed_rad_s)
+}
+
+#[test]
+fn lambda_and_regimes_follow_the_film() {
+    let p = FrictionParams::DEFAULT;
+    let input = nu205_inner(200.0, 1000.0);
+    for (film, regime) in [
+        (0.0, Lubrication::Boundary),
+        (0.1e-6, Lubrication::Boundary),
+        (0.2e-6, Lubrication::Mixed),
+        (0.6e-6, Lubrication::FullFilm),
+    ] {
+        let c = p.contact(&input, film);
+        assert!((c.lambda / (film / 0.15e-6) - 1.0).abs() < 1e-6 || film == 0.0);
+        assert_eq!(c.lubrication(), regime, "h = {film}");
+    }
+    assert_eq!(Lubrication::of(f32::NAN), Lubrication::Boundary);
+    // At λ = 0 the asperity load is Greenwood–Tripp's closed form with F₅/₂(0) = 0.616 634
+    // over the Hertz area 2bl, b = √(8QR/(πlE′)).
+    let d = FrictionDesign::DEFAULT;
+    let (sigma, beta, density) = (
+        f64::from(d.composite_roughness_m),
+        f64::from(d.summit_radius_m),
+        f64::from(d.asperity_density_m2),
+    );
+    let (q, r, l, e) = (
+        f64::from(input.load_n),
+        f64::from(input.reduced_radius_m),
+        f64::from(input.length_m),
+        f64::from(input.reduced_modulus_pa),
+    );
+    let area = 2.0 * (8.0 * q * r / (core::f64::consts::PI * l * e)).sqrt() * l;
+    let nbs = density * beta * sigma;
+    let expected = 8.0 * 2f64.sqrt() / 15.0
+        * core::f64::consts::PI
+        * nbs
+        * nbs
+        * (sigma / beta).sqrt()
+        * e
+        * area
+        * 0.616_634;
+    let dry = p.contact(&input, 0.0);
+    assert!(
+        (f64::from(dry.asperity_load_n) / expected - 1.0).abs() < 2e-3,
+        "{dry:?} vs {expected}"
+    );
+    let expected_area = core::f64::consts::PI.powi(2) * nbs * nbs * area * 0.5;
+    let boundary = f64::from(d.boundary_shear_strength_pa) * expected_area
+        + f64::from(d.boundary_friction_coefficient) * expected;
+    assert!((f64::from(dry.boundary_n) / boundary - 1.0).abs() < 3e-3);
+    // The asperities' share falls as the film grows, to nothing in full film.
+    let mixed = p.contact(&input, 0.2e-6);
+    let full = p.contact(&input, 1.0e-6);
+    assert!(dry.asperity_load_n > mixed.asperity_load_n);
+    assert!(
+        full.asperity_load_n < 1e-6 * dry.asperity_load_n,
+        "{full:?}"
+    );
+}
+
+/// ∫₀^{π/2} τ₀·asinh(A·e^{a cos θ}) cos θ dθ by a 100 000-interval trapezoid rule in f64.
+fn eyring_mean_reference(newtonian: f64, a: f64) -> f64 {
+    let n = 100_000;
+    let h = core::f64::consts::FRAC_PI_2 / n as f64;
+    let g = |t: f64| (newtonian * (a * t.cos()).exp()).asinh() * t.cos();
+    let mut sum = 0.5 * (g(0.0) + g(core::f64::consts::FRAC_PI_2));
+    for i in 1..n {
+        sum += g(i as f64 * h);
+    }
+    sum * h
+}
+
+#[test]
+fn isothermal_eyring_quadrature_matches_fine_integration() {
+    let mut worst = 0.0f64;
+    for a in [4.0f32, 8.0, 15.0, 25.0] {
+        for k in 0..=12 {
+            let newtonian = 10f32.powf(-7.0 + 0.5 * k as f32);
+            // τ₀ = 1, h·… chosen so that the Newtonian argument is `newtonian`, b = l = 1.
+            let core = traction::isothermal_eyring_n(1.0, newtonian, 1.0, 1.0, 1.0, a, 1.0, 1.0);
+            let reference = 2.0 * eyring_mean_reference(f64::from(newtonian), f64::from(a));
+            worst = worst.max((f64::from(core) / reference - 1.0).abs());
+        }
+    }
+    assert!(worst < 0.04, "worst {worst}");
+}
+
+#[test]
+fn thermal_traction_caps_the_isothermal_one_at_high_slide() {
+    let input = nu205_inner(250.0, 1500.0);
+    let film = 0.8e-6;
+    let low = FrictionDesign {
+        slide_to_roll_ratio: 0.001,
+        ..FrictionDesign::DEFAULT
+    }
+    .params()
+    .unwrap()
+    .contact(&input, film);
+    let high = FrictionDesign {
+        slide_to_roll_ratio: 1.0,
+        ..FrictionDesign::DEFAULT
+    }
+    .params()
+    .unwrap()
+    .contact(&input, film);
+    // Traction rises with sliding but saturates (Eyring and shear heating): 1000× the slide
+    // gives far less than 1000× the force, and a coefficient below the limiting ≈ 0.1.
+    assert!(high.viscous_n > low.viscous_n);
+    assert!(high.viscous_n < 100.0 * low.viscous_n, "{low:?} {high:?}");
+    assert!(high.friction_coefficient() < 0.1, "{high:?}");
+}
+
+#[test]
+fn rolling_resistance_grows_with_speed_and_hardly_with_load() {
+    let p = FrictionParams::DEFAULT;
+    let slow = p.contact(&nu205_inner(250.0, 100.0), 0.1e-6).rolling_n;
+    let fast = p.contact(&nu205_inner(250.0, 1500.0), 0.8e-6).rolling_n;
+    let light = p.contact(&nu205_inner(25.0, 1500.0), 0.9e-6).rolling_n;
+    assert!(fast > 3.0 * slow, "{slow} {fast}");
+    // f_R ∝ W^0.013 isothermal: a tenth of the load, 3 % less (shear heating alters a(L)).
+    assert!((light / fast - 1.0).abs() < 0.05, "{light} {fast}");
+}
