@@ -36,7 +36,8 @@ pub const REFERENCE_VISCOSITY_PA_S: f64 = 0.04;
 /// Speed parameter used by [`ContactCase::from_moes`] (any value gives the same Barus solution).
 pub const REFERENCE_SPEED_PARAMETER: f64 = 1.0e-11;
 
-fn check(field: &'static str, value: f64, lo: f64, hi: f64) -> Result<(), EhlError> {
+/// `value` finite and in [lo, hi], else [`EhlError::InvalidInput`] naming `field`.
+pub(crate) fn check(field: &'static str, value: f64, lo: f64, hi: f64) -> Result<(), EhlError> {
     if value.is_finite() && value >= lo && value <= hi {
         Ok(())
     } else {

@@ -44,6 +44,7 @@ pub mod grid;
 pub mod kernel;
 pub mod lhs;
 pub mod newton;
+pub mod point;
 pub mod rheology;
 pub mod solution;
 #[cfg(test)]

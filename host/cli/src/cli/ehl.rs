@@ -14,6 +14,8 @@ use bearing_host_common::output::OutputFiles;
 use clap::{Args, Subcommand};
 use std::path::PathBuf;
 
+mod point;
+
 #[derive(Args, Debug)]
 pub struct EhlArgs {
     #[command(subcommand)]
@@ -75,9 +77,26 @@ struct CaseArgs {
     /// Incompressible lubricant instead of Dowson–Higginson density.
     #[arg(long)]
     incompressible: bool,
-    /// Number of grid nodes (41..=8193).
-    #[arg(long, default_value_t = ehl::DEFAULT_NODES)]
-    nodes: usize,
+    /// Number of grid nodes (line: 41..=8193, default 801; point: nodes per direction,
+    /// 2^n + 1 in 17..=513, default 129).
+    #[arg(long)]
+    nodes: Option<usize>,
+    /// Point contact: reduced radius across the rolling direction R_y in m (R_y/R_x in [1, 40]).
+    #[arg(long)]
+    radius_y: Option<f64>,
+    /// Point contact: ellipticity k = a/b in [1, 12] (sets R_y from --radius), instead of
+    /// --radius-y; with --m --l, the ellipticity of the case (default 1).
+    #[arg(long)]
+    ellipticity: Option<f64>,
+}
+
+/// The kind of contact `bearing ehl solve` solves.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+enum Contact {
+    /// Cylindrical roller: line contact.
+    Line,
+    /// Ball: circular or elliptical point contact.
+    Point,
 }
 
 #[derive(Args, Debug)]
@@ -85,13 +104,17 @@ struct CaseArgs {
 struct SolveArgs {
     #[command(flatten)]
     case: CaseArgs,
+    /// Contact kind: line (roller) or point (ball; give --radius-y or --ellipticity).
+    #[arg(long, value_enum, default_value = "line")]
+    contact: Contact,
     /// Machine-readable JSON output.
     #[arg(long)]
     json: bool,
     /// Write the pressure and film profile to this CSV file.
     #[arg(long)]
     profile: Option<PathBuf>,
-    /// Plot pressure (with the Hertz ellipse) and film against X to this PNG file.
+    /// Plot pressure (with the Hertz ellipse) and film against X to this PNG file (line), or
+    /// the pressure and film maps to this SVG file (point).
     #[arg(long)]
     plot: Option<PathBuf>,
 }
@@ -115,7 +138,7 @@ impl CaseArgs {
                 ViscosityLaw::Roelands
             },
             compressible: !self.incompressible,
-            nodes: self.nodes,
+            nodes: self.nodes.unwrap_or(ehl::DEFAULT_NODES),
             ..Default::default()
         }
     }
@@ -132,6 +155,9 @@ impl CaseArgs {
     }
 
     fn case(&self) -> Result<ContactCase> {
+        if self.radius_y.is_some() || self.ellipticity.is_some() {
+            bail!("--radius-y and --ellipticity are point-contact flags: use `bearing ehl solve --contact point`");
+        }
         let si = [
             ("--load", self.load),
             ("--length", self.length),
@@ -243,6 +269,9 @@ pub fn run(args: EhlArgs) -> Result<()> {
 }
 
 fn solve(a: SolveArgs) -> Result<()> {
+    if a.contact == Contact::Point {
+        return point::solve(&a);
+    }
     let result = a.case.case().and_then(|c| {
         super::ehl_trust::solve(&c, &a.case.options(), a.case.flags(), |e| {
             name_flags(e, &[], "the case")

@@ -1,0 +1,81 @@
+//! Accuracy evidence of the point-contact solver on coarse grids (CI cost: see
+//! docs/point_contact.md): grid refinement, the Hertz limit, the rigid iso-viscous limit and
+//! the load balance.
+
+use super::*;
+
+fn coarse(nodes: usize) -> PointSolverOptions {
+    PointSolverOptions {
+        nodes,
+        richardson: false,
+        ..Default::default()
+    }
+}
+
+/// h_c converges under refinement (circular, Roelands + DH, M = 20, L = 10): the changes
+/// 33² → 65² → 129² shrink by a factor near 4 (formal order 2), and the 65²-node value is
+/// within 3 % of the 129² one.
+#[test]
+fn central_film_converges_under_refinement() {
+    let case = PointContactCase::from_moes(20.0, 10.0, 1.0).unwrap();
+    let films: Vec<(f64, f64)> = [33, 65, 129]
+        .iter()
+        .map(|&n| {
+            let s = solve_point(&case, &coarse(n)).unwrap();
+            (s.central_film_raw_m, s.min_film_raw_m)
+        })
+        .collect();
+    println!("h_c, h_min on 33², 65², 129²: {films:?}");
+    let d1 = (films[1].0 - films[0].0).abs();
+    let d2 = (films[2].0 - films[1].0).abs();
+    assert!(d2 < d1 / 3.0 && d2 > d1 / 5.0, "changes {d1:e}, {d2:e}");
+    assert!((films[1].0 / films[2].0 - 1.0).abs() < 0.03, "{films:?}");
+}
+
+/// Hertz limit: at high load (M ≈ 1000, here L ≈ 10) the pressure inside r ≤ 0.8 follows
+/// the Hertz ellipsoid √(1 − X² − Y²) of the dry contact (Johnson eq. 4.21) to a few per cent
+/// of p_h, and the maximum pressure is near p_h.
+#[test]
+fn high_load_pressure_tends_to_hertz() {
+    let case = PointContactCase::from_moes(1000.0, 10.0, 1.0).unwrap();
+    let s = solve_point(&case, &coarse(65)).unwrap();
+    let maps = &s.maps;
+    let nx = maps.x.len();
+    let (mut worst, mut count) = (0.0f64, 0);
+    for (j, y) in maps.y.iter().enumerate() {
+        for (i, x) in maps.x.iter().enumerate() {
+            let r2 = x * x + y * y;
+            if r2 <= 0.64 {
+                let hertz = (1.0 - r2).sqrt();
+                worst = worst.max((maps.pressure[j * nx + i] - hertz).abs());
+                count += 1;
+            }
+        }
+    }
+    println!("max |P − Hertz| over {count} nodes with r ≤ 0.8: {worst:.4}");
+    assert!(count > 100);
+    assert!(worst < 0.05, "{worst}");
+    assert!((s.max_pressure_pa / s.hertz_pressure_pa - 1.0).abs() < 0.1);
+}
+
+/// Load balance: the converged pressure integrates to the applied load, ∬p dxdy = w, with the
+/// semi-axes of the Hertz ellipse (elliptical case, k ≈ 5).
+#[test]
+fn pressure_carries_the_load() {
+    let case = PointContactCase::new(200.0, 5.0, 0.004, 0.06, 2.26e11, 2.0e-8, 0.01).unwrap();
+    let s = solve_point(&case, &coarse(33)).unwrap();
+    let m = &s.maps;
+    let (dx, dy) = (m.x[1] - m.x[0], m.y[1] - m.y[0]);
+    let force = m.pressure.iter().sum::<f64>()
+        * dx
+        * dy
+        * s.hertz_pressure_pa
+        * s.hertz.semi_axis_rolling_m
+        * s.hertz.semi_axis_transverse_m;
+    println!(
+        "k = {:.3}: ∬p = {force:.4} N for w = 200 N",
+        s.hertz.ellipticity
+    );
+    assert!(s.hertz.ellipticity > 4.0);
+    assert!((force / case.load_n - 1.0).abs() < 2e-4, "{force}");
+}
