@@ -3,14 +3,14 @@
 //!
 //! Unknowns: the pressure at the nodes of a uniform grid over X = x/b ∈ [−4.5, 1.5],
 //! Y = y/a ∈ [−3, 3] (b the Hertz semi-axis along the rolling direction, a across it; [`hertz`])
-//! and the rigid-body separation H₀. Equations ([`level`]): Reynolds in 2D with Roelands or
+//! and the rigid-body separation H₀. Equations (`level`): Reynolds in 2D with Roelands or
 //! Barus viscosity and Dowson–Higginson density (the rheology of the line contact,
 //! crate::rheology), the film equation with the exact elastic half-space deflection of
 //! piecewise-constant pressure (Love's rectangle coefficients, applied by zero-padded FFT;
 //! [`deflection`]), the Reynolds cavitation condition P ≥ 0 and the load balance
 //! ∫∫P dXdY = 2π/3.
 //!
-//! Method ([`solver`], [`level`]): Newton on the pressure with the Reynolds cavitation
+//! Method ([`solver`], `level`): Newton on the pressure with the Reynolds cavitation
 //! condition by a primal–dual active set, H₀ updated by the load balance after every step, a
 //! Hertz start with H₀ set from the Nijenbanning–Venner–Moes film, and grid sequencing
 //! 33² → 65² → 129² (each level started from the bilinear interpolation of the one below). The
