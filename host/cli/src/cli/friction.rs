@@ -87,12 +87,7 @@ pub fn palmgren_torque_nm(
 /// Run `bearing friction`.
 pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
     let (config, params) = BearingConfig::load(&args.config)?;
-    let load = args
-        .radial_load
-        .or(config.case.radial_load_n.map(f64::from))
-        .context(
-            "no radial load: give --radial-load N or set [case] radial_load_n in the config",
-        )?;
+    let load = super::statics::radial_load_n(args.radial_load, &config)?;
     if args.min_rpm >= args.max_rpm {
         bail!(
             "--min-rpm = {} must be below --max-rpm = {}",

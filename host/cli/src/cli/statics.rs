@@ -211,15 +211,16 @@ fn print_human(title: &str, s: &Solution) {
     }
 }
 
+/// The radial load (N) of a command: `--radial-load`, else the config's `[case]` value.
+pub(super) fn radial_load_n(flag: Option<f64>, config: &BearingConfig) -> anyhow::Result<f64> {
+    flag.or(config.case.radial_load_n.map(f64::from))
+        .context("no radial load: give --radial-load N or set [case] radial_load_n in the config")
+}
+
 /// Run `bearing static`.
 pub fn run(args: StaticArgs) -> anyhow::Result<()> {
     let (config, params) = BearingConfig::load(&args.config)?;
-    let load = args
-        .radial_load
-        .or(config.case.radial_load_n.map(f64::from))
-        .context(
-            "no radial load: give --radial-load N or set [case] radial_load_n in the config",
-        )?;
+    let load = radial_load_n(args.radial_load, &config)?;
     let rpm = args
         .speed_rpm
         .or(config.case.speed_rpm.map(f64::from))
