@@ -1,5 +1,6 @@
 //! `bearing friction`'s refusals (the static load rating and speed of `bearing static`), its
-//! single-contact Stribeck curve and the load-sharing comparison it reports (docs/friction.md).
+//! single-contact Stribeck curve, the load-sharing comparison it reports and the power loss of
+//! `bearing shaft sweep` (docs/friction.md, docs/shaft.md).
 
 mod common;
 use common::{bearing, config};
@@ -161,4 +162,48 @@ fn load_sharing_comparison_reproduces_the_core_and_stays_within_one_percent() {
         let change = f(&sharing["torque_change"]);
         assert!(change <= 0.0 && change > -0.01, "{p}");
     }
+}
+
+/// `bearing shaft sweep` gives the roller bearings' power loss per speed on both sides, with
+/// its split summing to it, rising with speed, and a fourth plot.
+#[test]
+fn shaft_sweep_reports_power_loss_lubricated_and_dry() {
+    let dir = tempfile::tempdir().unwrap();
+    let plot = dir.path().join("sweep.png");
+    let v = json(&[
+        "shaft",
+        "sweep",
+        "--config",
+        &config("shaft_nu205_rig.toml"),
+        "--speeds-rpm",
+        "1000,8000",
+        "--settle",
+        "0.005",
+        "--duration",
+        "0.005",
+        "--plot",
+        plot.to_str().unwrap(),
+        "--json",
+    ]);
+    for side in ["lubricated", "dry"] {
+        let power: Vec<f64> = v[side]["power_loss_w"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(f)
+            .collect();
+        assert_eq!(power.len(), 2);
+        assert!(power[0] > 0.0 && power[1] > power[0], "{side}: {power:?}");
+        for (i, total) in power.iter().enumerate() {
+            let parts: f64 = ["rolling", "viscous", "boundary"]
+                .iter()
+                .map(|k| f(&v[side]["power_loss_split_w"][k][i]))
+                .sum();
+            assert!((parts / total - 1.0).abs() < 1e-5, "{side} {i}");
+        }
+        let torque = f(&v[side]["friction_torque_nm"][1]);
+        let omega = 8000.0 * std::f64::consts::PI / 30.0;
+        assert!((power[1] / (torque * omega) - 1.0).abs() < 1e-5);
+    }
+    assert!(dir.path().join("sweep_power_loss.png").exists());
 }
