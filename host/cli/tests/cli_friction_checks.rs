@@ -60,6 +60,18 @@ fn friction_refuses_what_static_refuses_naming_the_flag_or_the_field() {
         "1e6",
     ]);
     assert!(!ok && err.contains("--roller-load = 1e6 N"), "{err}");
+    let (ok, _, err) = bearing(&[
+        "friction",
+        "--config",
+        &hub,
+        "--contact",
+        "outer",
+        "--roller-load",
+        "100",
+        "--max-rpm",
+        "1e7",
+    ]);
+    assert!(!ok && err.contains("--max-rpm = 1e7 rpm"), "{err}");
 }
 
 /// One contact from standstill to speed: λ rises, the regime runs boundary → mixed → full film,

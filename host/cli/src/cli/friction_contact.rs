@@ -84,14 +84,9 @@ pub fn run(
     let outer = side == ContactSide::Outer;
     let load = load_n as f32;
     super::film::check_hertz("--roller-load", &params.contact_input(outer, load, 0.0))?;
-    if args.max_rpm > super::film::max_speed_rpm() {
-        anyhow::bail!(
-            "--max-rpm = {:e} rpm is out of range: allowed up to {:.0} rpm (the core's highest \
-             shaft speed, 10⁵ rad/s)",
-            args.max_rpm,
-            super::film::max_speed_rpm()
-        );
-    }
+    // The speed as `bearing static` checks it (the contact's load is checked above, not the
+    // bearing's radial load).
+    super::statics::check_case(params, (0.0, "--radial-load"), (args.max_rpm, "--max-rpm"))?;
     let n = usize::from(args.points);
     let points: Vec<Point> = (0..n)
         .map(|k| {
@@ -185,7 +180,8 @@ fn plot(points: &[Point], title: &str, load_n: f64, path: &Path) -> anyhow::Resu
         .flat_map(|p| coefficients(&p.contacts[0], load_n))
         .filter(|v| *v > 0.0);
     let (lo, hi) = values.fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
-    let y = (lo.max(1e-7) * 0.5)..(hi.max(1e-6) * 2.0);
+    // Four decades below the largest: the boundary part's tail below that is not visible.
+    let y = (lo.max(hi * 1e-4) * 0.5)..(hi.max(1e-6) * 2.0);
     let mut chart = ChartBuilder::on(&top)
         .caption(format!("{title}: friction coefficient"), ("sans-serif", 20))
         .margin(12)
@@ -197,6 +193,7 @@ fn plot(points: &[Point], title: &str, load_n: f64, path: &Path) -> anyhow::Resu
         .configure_mesh()
         .x_desc("shaft speed (rpm)")
         .y_desc("coefficient (–)")
+        .y_label_formatter(&|v| format!("{v:.0e}"))
         .draw()
         .map_err(e)?;
     let series = [
