@@ -165,6 +165,61 @@ fn thermal_traction_caps_the_isothermal_one_at_high_slide() {
     assert!(high.friction_coefficient() < 0.1, "{high:?}");
 }
 
+/// Evans & Johnson's bracket ln A in f64 (their large-A form) and A itself, for the thermal
+/// stress of `traction::evans_johnson_stress_pa` at film `h` (m).
+fn evans_johnson_bracket(
+    t: &traction::Thermal,
+    eta0: f64,
+    alpha: f64,
+    p: f64,
+    h: f64,
+) -> (f64, f64) {
+    let (k, r, e, u) = (t.fluid_conductivity_w_mk as f64, 0.01, 2.3e11, 10.0);
+    let xi = 4.0 / core::f64::consts::PI * k * r / h
+        * (p / (e * r * t.solid_effusivity_sq as f64 * u)).sqrt();
+    let root = (2.0 * k * eta0 / (t.viscosity_temperature_k_inv as f64 * (1.0 + 9.6 * xi))).sqrt();
+    let a = (0.5 * alpha * p).exp() * 1.2 / (t.eyring_stress_pa as f64 * h) * root;
+    (a.ln(), a)
+}
+
+#[test]
+fn thermal_stress_follows_evans_johnson_and_stays_positive_where_its_logarithm_fails() {
+    let t = traction::Thermal {
+        eyring_stress_pa: 5.0e6,
+        fluid_conductivity_w_mk: 0.14,
+        viscosity_temperature_k_inv: 0.034,
+        solid_effusivity_sq: 46.6 * 7830.0 * 475.0,
+    };
+    let stress = |eta0: f64, alpha: f64, p: f64, h: f64| {
+        traction::evans_johnson_stress_pa(
+            &t,
+            eta0 as f32,
+            alpha as f32,
+            p as f32,
+            h as f32,
+            0.01,
+            2.3e11,
+            10.0,
+        ) as f64
+    };
+    // An EHL contact (A ≫ 1): the paper's 1.74·τ₀·ln A, to 1 %.
+    let (ln_a, a) = evans_johnson_bracket(&t, 0.05, 2.0e-8, 1.0e9, 0.3e-6);
+    assert!(a > 100.0, "{a}");
+    let paper = 1.74 * 5.0e6 * ln_a;
+    let got = stress(0.05, 2.0e-8, 1.0e9, 0.3e-6);
+    assert!((got / paper - 1.0).abs() < 0.01, "{got} vs {paper}");
+    // A thick, lightly loaded film (A < 1, where ln A < 0): positive, and the
+    // conduction-limited Newtonian stress 0.87·τ₀·A to 1 %.
+    let (ln_a, a) = evans_johnson_bracket(&t, 0.01, 2.0e-8, 1.0e6, 20.0e-6);
+    assert!(ln_a < 0.0, "{a}");
+    let got = stress(0.01, 2.0e-8, 1.0e6, 20.0e-6);
+    let limit = 0.87 * 5.0e6 * a;
+    assert!(
+        got > 0.0 && (got / limit - 1.0).abs() < 0.01,
+        "{got} vs {limit}"
+    );
+}
+
 #[test]
 fn rolling_resistance_grows_with_speed_and_hardly_with_load() {
     let p = FrictionParams::DEFAULT;

@@ -28,6 +28,17 @@ const fn gauss_nodes() -> [(f32, f32); 4] {
 /// overflow f32 at the α·p of a hard EHL contact: up to ≈ 100).
 const LN_LARGE_ARGUMENT: f32 = 20.0;
 
+/// asinh y from ln y, without forming y where it would overflow (y > e^20: asinh y = ln 2y
+/// there to f32 precision).
+fn asinh_of_ln(ln_y: f32) -> f32 {
+    let y = exp(min(ln_y, LN_LARGE_ARGUMENT));
+    select(
+        ln_y > LN_LARGE_ARGUMENT,
+        core::f32::consts::LN_2 + ln_y,
+        ln(y + sqrt(y * y + 1.0)),
+    )
+}
+
 /// Isothermal Eyring traction (N) of a film of thickness `film_m` carrying the Hertzian
 /// pressure of peak `peak_pressure_pa` over half-width b (`half_width_m`) and length l: the
 /// shear stress τ = τ₀·asinh(η(p)·u_s/(h·τ₀)) with the Barus viscosity η = η₀·e^{αp}
@@ -48,16 +59,7 @@ pub fn isothermal_eyring_n(
     let a = pressure_viscosity_pa_inv * peak_pressure_pa;
     let mean: f32 = NODES
         .iter()
-        .map(|&(c, w)| {
-            let ln_y = ln_newtonian + a * c;
-            let y = exp(min(ln_y, LN_LARGE_ARGUMENT));
-            let asinh = select(
-                ln_y > LN_LARGE_ARGUMENT,
-                core::f32::consts::LN_2 + ln_y,
-                ln(y + sqrt(y * y + 1.0)),
-            );
-            w * asinh
-        })
+        .map(|&(c, w)| w * asinh_of_ln(ln_newtonian + a * c))
         .sum();
     // ∫ over −b … b is twice the half-width mean.
     2.0 * half_width_m * length_m * eyring_stress_pa * mean
@@ -81,7 +83,15 @@ pub struct Thermal {
 /// ξ = (4/π)·(K/(h/R))·√(p̄/(E′·R·K′ρ′c′·u)). The logarithm's argument needs a temperature
 /// scale to be dimensionless: the temperature–viscosity coefficient β_T of the thermal
 /// Eyring analysis (Johnson & Greenwood, Wear 61 (1980) 353–374) — docs/physics.md §8.3.
-/// Never negative.
+///
+/// Evans & Johnson's bracket is ln A with A = e^{α·p̄/2}·(1.2/(τ₀·h))·√(…): the
+/// large-argument form of an Eyring law, valid where A ≫ 1 (strongly non-Newtonian, thermal
+/// plateau). Where light loads and thick films make A small the logarithm falls to zero and
+/// below, a stress the fluid cannot have. The bracket is therefore taken as asinh(A/2), equal
+/// to ln A to 1 % for A ≥ 4.5 (the paper's range) and tending to A/2 below: the
+/// conduction-limited stress of a Newtonian film, 0.87·τ₀·A ∝ √(K·η₀/β_T)/h, which is
+/// positive and falls with the film as the thermal Newtonian limit does. This regularisation
+/// is this model's, not the paper's.
 #[allow(clippy::too_many_arguments)]
 pub fn evans_johnson_stress_pa(
     t: &Thermal,
@@ -104,10 +114,9 @@ pub fn evans_johnson_stress_pa(
         );
     let root = sqrt(2.0 * k * viscosity_pa_s / (t.viscosity_temperature_k_inv * (1.0 + 9.6 * xi)));
     let argument = 1.2 / (t.eyring_stress_pa * film_m) * root;
-    let stress = 1.74
-        * t.eyring_stress_pa
-        * (0.5 * pressure_viscosity_pa_inv * mean_pressure_pa + ln(argument));
-    max(stress, 0.0)
+    let ln_half_a =
+        0.5 * pressure_viscosity_pa_inv * mean_pressure_pa + ln(argument) - core::f32::consts::LN_2;
+    1.74 * t.eyring_stress_pa * asinh_of_ln(ln_half_a)
 }
 
 /// The speed-dependent exponent and offset of the Goksem–Hargreaves rolling traction, from
