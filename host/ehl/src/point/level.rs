@@ -1,6 +1,6 @@
 //! One uniform grid level of the point-contact solver: the discretised Reynolds equation, its
-//! semi-system Jacobian in a fixed sparse pattern and the sparse LU that solves for the Newton
-//! correction.
+//! semi-system Jacobian in a fixed sparse pattern, its sparse LU, and the Newton correction
+//! solved by GMRES with that LU as preconditioner.
 //!
 //! Discretisation (Venner & Lubrecht, *Multilevel Methods in Lubrication*, 2000, ch. 9, in the
 //! scaling X = x/b, Y = y/a, P = p/p_h, H = hR_x/b²):
