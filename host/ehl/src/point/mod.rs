@@ -10,25 +10,28 @@
 //! [`deflection`]), the Reynolds cavitation condition P ≥ 0 and the load balance
 //! ∫∫P dXdY = 2π/3.
 //!
-//! Method ([`solver`], `level`): Newton on the pressure with the Reynolds cavitation
-//! condition by a primal–dual active set, H₀ updated by the load balance after every step, a
-//! Hertz start with H₀ set from the Nijenbanning–Venner–Moes film, and grid sequencing
-//! 33² → 65² → 129² (each level started from the bilinear interpolation of the one below). The
-//! 33² level uses the exact Jacobian (dense deflection coupling; quadratic convergence in about
-//! ten steps); finer levels use a semi-system Jacobian that keeps the deflection coupling within
-//! ±4 × ±2 nodes (sparse LU from faer), with the full deflection recomputed by FFT after each
-//! step and the step relaxed by 0.3·64/(N − 1) (measured: larger steps diverge on 129²). h_c and
-//! h_min are reported Richardson-extrapolated from the two finest levels (raw values kept).
+//! Method ([`solver`], `level`, `linearised`, `gmres`): Newton on the pressures and H₀
+//! together (the load balance is the last equation), with the Reynolds cavitation condition by
+//! a primal–dual active set, a Hertz start with H₀ set from the Nijenbanning–Venner–Moes film,
+//! and grid sequencing 33² → 65² → 129² (each level started from the bilinear interpolation of
+//! the one below). Each Newton system is solved by GMRES with the exact Jacobian applied
+//! matrix-free (its deflection part by FFT) and preconditioned by the sparse LU (faer) of the
+//! semi-system Jacobian, which keeps the deflection coupling within ±2 × ±1 nodes; the step is
+//! relaxed only where the correction grows. h_c and h_min are reported Richardson-extrapolated
+//! from the two finest levels (raw values kept). Cost and accuracy are measured in
+//! docs/point_contact.md.
 //!
-//! Why not Venner–Lubrecht multigrid: it was not tried; the Newton/semi-system route reuses the
-//! line contact's faer LU and active-set approach, and its cost and convergence are measured in
-//! docs/point_contact.md, including where it falls short of the 1 %-in-2-s target.
+//! Why not Venner–Lubrecht multigrid: the Newton–Krylov route reuses the line contact's faer
+//! LU and active-set approach and meets the speed target at 129² nodes (docs/point_contact.md);
+//! multigrid was not tried.
 
 pub mod case;
 pub mod deflection;
 pub mod formulas;
+mod gmres;
 pub mod hertz;
 mod level;
+mod linearised;
 pub mod solver;
 #[cfg(test)]
 mod tests;

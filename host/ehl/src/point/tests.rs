@@ -79,3 +79,81 @@ fn pressure_carries_the_load() {
     assert!(s.hertz.ellipticity > 4.0);
     assert!((force / case.load_n - 1.0).abs() < 2e-4, "{force}");
 }
+
+/// CPU time of this thread (user + system), s, from /proc/thread-self/stat (Linux; fields 14
+/// and 15 in USER_HZ = 100 ticks per second, proc(5)); None elsewhere.
+fn thread_cpu_s() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/thread-self/stat").ok()?;
+    // Fields after the parenthesised command name, which may contain spaces.
+    let rest = &stat[stat.rfind(')')? + 2..];
+    let fields: Vec<&str> = rest.split_whitespace().collect();
+    let ticks = |i: usize| fields.get(i - 3)?.parse::<f64>().ok();
+    Some((ticks(14)? + ticks(15)?) / 100.0)
+}
+
+/// Solve time and the published formulas over 24 circular and elliptical cases spanning
+/// ball-bearing contacts (M 20–1000, L 6 and 12, k 1, 3, 6; Roelands + DH, 129² nodes).
+/// Prints the table of docs/point_contact.md and the median and p95 wall time; ignored in the
+/// test suite (≈ 1 min on one core): `cargo test --release -p bearing-ehl
+/// point_contact_benchmark -- --ignored --nocapture --test-threads=1`.
+#[test]
+#[ignore]
+fn point_contact_benchmark() {
+    let (mut times, mut cpu_times, mut resolved) = (Vec::new(), Vec::new(), 0);
+    println!("| M | L | k | h_c µm | h_c grid error % | HD h_c | NVM h_c | h_min µm | h_min grid error % | HD h_min | wall s | CPU s |");
+    println!("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+    for k in [1.0, 3.0, 6.0] {
+        for m in [20.0, 100.0, 300.0, 1000.0] {
+            for l in [6.0, 12.0] {
+                let case = PointContactCase::from_moes(m, l, k).unwrap();
+                let cpu_start = thread_cpu_s();
+                let s = solve_point(&case, &PointSolverOptions::default()).unwrap();
+                let cpu = cpu_start.zip(thread_cpu_s()).map(|(a, b)| b - a);
+                let (ec, em) = s.grid_error_estimate.unwrap();
+                let ratio = |f: f64, g: f64| format!("{:+.1} %", 100.0 * (f / g - 1.0));
+                // h_c and h_min carry "raw" where the two finest grids differ by more than 30 %
+                // and no extrapolation is made.
+                let raw = if s.richardson { "" } else { " raw" };
+                println!(
+                    "| {m} | {l} | {k} | {:.4}{raw} | {:.1} | {} | {} | {:.4} | {:.1} | {} | {:.2} | {:.2} |",
+                    s.central_film_m * 1e6,
+                    100.0 * ec,
+                    ratio(
+                        formulas::hamrock_dowson_central_film_m(&case),
+                        s.central_film_m
+                    ),
+                    ratio(
+                        formulas::nijenbanning_central_film_m(&case),
+                        s.central_film_m
+                    ),
+                    s.min_film_m * 1e6,
+                    100.0 * em,
+                    ratio(formulas::hamrock_dowson_min_film_m(&case), s.min_film_m),
+                    s.wall_time_s,
+                    cpu.unwrap_or(f64::NAN),
+                );
+                times.push(s.wall_time_s);
+                cpu_times.push(cpu.unwrap_or(f64::NAN));
+                resolved += usize::from(s.richardson && ec <= 0.01);
+            }
+        }
+    }
+    let quantiles = |mut t: Vec<f64>| {
+        t.sort_by(f64::total_cmp);
+        let at = |q: f64| t[((t.len() - 1) as f64 * q).round() as usize];
+        format!(
+            "median {:.2} s, p95 {:.2} s, max {:.2} s",
+            at(0.5),
+            at(0.95),
+            at(1.0)
+        )
+    };
+    println!(
+        "{} solves: wall {}; CPU {}; {resolved} with a Richardson value and a raw h_c grid \
+         error ≤ 1 %",
+        times.len(),
+        quantiles(times.clone()),
+        quantiles(cpu_times),
+    );
+    assert_eq!(times.len(), 24);
+}
