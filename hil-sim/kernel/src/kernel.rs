@@ -6,7 +6,8 @@
 //! `configs/<bearing>.toml`, docs/physics.md §6; a test checks they agree with the config files),
 //! keeps the core's [`Bearing`] (which carries the cage angle and the warm start from one
 //! sample to the next), turns each sample into an [`OperatingState`], advances the bearing by
-//! one nominal period and copies the result into [`StepOutputs`].
+//! one nominal period and copies the result into [`StepOutputs`]; [`Kernel::friction`] then
+//! adds the bearing's friction torque and power loss at that step.
 //!
 //! Determinism (docs/architecture.md, rules for the core): the cage advances by the nominal time
 //! step 1/rate of the trace (validated to within the gap tolerance), not by the difference of
@@ -199,6 +200,33 @@ impl Kernel {
             Model::Nu205(b) => copy_output(b, &state, dt_s, out),
         }
     }
+
+    /// The friction of the last step at `sample`'s shaft speed (the core's
+    /// `Bearing::friction`, docs/physics.md §8): writes the friction torque, power loss and its
+    /// split into `out`. A call of its own after [`Kernel::step`], so that the firmware counts
+    /// the step's instructions as before and the friction's apart; the same work every call.
+    #[inline(always)]
+    pub fn friction(&mut self, sample: &Sample, out: &mut StepOutputs) -> Result<(), KernelFault> {
+        match &mut self.model {
+            Model::HubMotor(b) => copy_friction(b, sample.speed_rad_s, out),
+            Model::Nu205(b) => copy_friction(b, sample.speed_rad_s, out),
+        }
+    }
+}
+
+/// Computes `bearing`'s friction at shaft speed ω (rad/s) and copies it into the record.
+fn copy_friction<const Z: usize>(
+    bearing: &mut Bearing<Z, SLICES>,
+    shaft_speed_rad_s: f32,
+    out: &mut StepOutputs,
+) -> Result<(), KernelFault> {
+    let result = bearing
+        .friction(shaft_speed_rad_s)
+        .map_err(KernelFault::Rejected)?;
+    out.friction_torque_nm = result.friction_torque_nm;
+    out.power_loss_w = result.power_loss_w;
+    out.power_loss_split_w = result.power_loss_split_w;
+    Ok(())
 }
 
 /// Advances `bearing` to `state` by `dt_s` and copies its output into the harness's
