@@ -21,7 +21,7 @@ pub fn default_trace() -> PathBuf {
 pub fn describe(error: &KernelError) -> String {
     match error {
         KernelError::UnknownBearing => {
-            "unknown bearing identifier (known: hub_motor, nu205)".to_string()
+            "unknown bearing identifier (known: hub_motor, hub_motor_hs, nu205)".to_string()
         }
         KernelError::UnknownLubricant => {
             "unknown lubricant identifier (known: thesis_oil, thesis_oil_hs)".to_string()

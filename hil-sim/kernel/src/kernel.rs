@@ -17,6 +17,7 @@
 
 use super::outputs::{StepOutputs, MAX_ROLLERS};
 use super::wire::Sample;
+use bearing_core::bearing::STEEL_DENSITY_KG_M3;
 use bearing_core::film::corrections::FilmCorrections;
 pub use bearing_core::FilmKind;
 use bearing_core::{Bearing, BearingDesign, BearingParams, OperatingState};
@@ -49,12 +50,13 @@ pub enum KernelFault {
 }
 
 /// The design of a bearing identifier in a lubricant identifier: the core's preset of
-/// `configs/<bearing>.toml` (docs/physics.md §6). `thesis_oil` (η₀ = 0.08 Pa·s, α = 2.1·10⁻⁸ 1/Pa,
-/// ρ₀ = 833.8 kg/m³, the oil of both reference machines, §6.1, §6.2) is the presets' own;
+/// `configs/<bearing>.toml` (docs/physics.md §6); `hub_motor_hs` is the hub motor's.
+/// `thesis_oil` (η₀ = 0.08 Pa·s, α = 2.1·10⁻⁸ 1/Pa, ρ₀ = 833.8 kg/m³, the oil of both
+/// reference machines, §6.1, §6.2) is the presets' own;
 /// `thesis_oil_hs` is the same oil with the film corrections of [`film_corrections`].
 pub fn design(bearing_id: &str, lubricant_id: &str) -> Result<BearingDesign, KernelError> {
     let design = match bearing_id {
-        "hub_motor" => BearingDesign::HUB_MOTOR,
+        "hub_motor" | "hub_motor_hs" => BearingDesign::HUB_MOTOR,
         "nu205" => BearingDesign::NU205,
         _ => return Err(KernelError::UnknownBearing),
     };
@@ -87,12 +89,22 @@ pub fn film_corrections(lubricant_id: &str) -> Result<FilmCorrections, KernelErr
     })
 }
 
-/// The validated parameters of [`design`], with the [`film_corrections`] of the lubricant.
+/// The validated parameters of [`design`], with the [`film_corrections`] of the lubricant;
+/// `hub_motor_hs` adds the rollers' centrifugal force (docs/physics.md §4.1, steel rollers of
+/// [`STEEL_DENSITY_KG_M3`]), as `configs/hub_motor_high_speed.toml` does: the case whose step
+/// cost `hil-sim qemu` reports for the centrifugal force on.
 pub fn params(bearing_id: &str, lubricant_id: &str) -> Result<BearingParams, KernelError> {
-    Ok(design(bearing_id, lubricant_id)?
+    let params = design(bearing_id, lubricant_id)?
         .params()
         .map_err(KernelError::Parameter)?
-        .with_film_corrections(film_corrections(lubricant_id)?))
+        .with_film_corrections(film_corrections(lubricant_id)?);
+    if bearing_id == "hub_motor_hs" {
+        params
+            .with_centrifugal_force(STEEL_DENSITY_KG_M3)
+            .map_err(KernelError::Parameter)
+    } else {
+        Ok(params)
+    }
 }
 
 /// The core's bearing at the roller count of each known identifier.
@@ -131,7 +143,7 @@ impl Kernel {
         }
         let params = params(bearing_id, lubricant_id)?;
         let model = match bearing_id {
-            "hub_motor" => {
+            "hub_motor" | "hub_motor_hs" => {
                 Model::HubMotor(Bearing::new(params, film).map_err(KernelError::Parameter)?)
             }
             _ => Model::Nu205(Bearing::new(params, film).map_err(KernelError::Parameter)?),

@@ -27,6 +27,16 @@ fn parameters_agree_with_the_config_files() {
         let (_, from_file) = bearing_host_common::config::BearingConfig::load(&path).unwrap();
         assert_eq!(params(id, "thesis_oil").unwrap(), from_file, "{id}");
     }
+    // The high-speed identifiers together: the hub motor's high-speed bearing file, with its
+    // centrifugal force and both film corrections.
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/hub_motor_high_speed.toml");
+    let (_, from_file) = bearing_host_common::config::BearingConfig::load(&path).unwrap();
+    assert_eq!(params("hub_motor_hs", "thesis_oil_hs").unwrap(), from_file);
+    assert_ne!(
+        params("hub_motor_hs", "thesis_oil").unwrap(),
+        params("hub_motor", "thesis_oil").unwrap()
+    );
 }
 
 #[test]
