@@ -56,8 +56,8 @@ impl FrictionDesign {
     /// σ = 0.15 µm (ground raceway Rq ≈ 0.12 µm with a roller Rq ≈ 0.09 µm); summit radius
     /// β = 20 µm and density from η_s·β·σ = 0.04 (Greenwood & Williamson's 0.03 … 0.05);
     /// τ_b = 2 MPa, ζ = 0.1 (boundary friction of additive mineral oils on steel, 0.08 …
-    /// 0.13); τ₀ = 5 MPa (mineral oils, 2 … 10 MPa, Evans & Johnson 1986); β_T = 0.03 1/K
-    /// (mineral oils 0.02 … 0.05 1/K); K = 0.14 W/(m·K) (mineral oils 0.12 … 0.15 at ambient
+    /// 0.13); τ₀ = 5 MPa (mineral oils, 2 … 10 MPa, Evans & Johnson 1986); β_T = 0.034 1/K
+    /// (an ISO VG 68 oil, the film corrections' default; mineral oils 0.02 … 0.05 1/K); K = 0.14 W/(m·K) (mineral oils 0.12 … 0.15 at ambient
     /// pressure); bearing steel K′ = 46.6 W/(m·K), ρ′ = 7830 kg/m³, c′ = 475 J/(kg·K);
     /// s = 1 % (an assumed roller slip; see docs/physics.md §8.4).
     pub const DEFAULT: FrictionDesign = FrictionDesign {
@@ -67,7 +67,8 @@ impl FrictionDesign {
         boundary_shear_strength_pa: 2.0e6,
         boundary_friction_coefficient: 0.1,
         eyring_stress_pa: 5.0e6,
-        viscosity_temperature_coefficient_k_inv: 0.03,
+        viscosity_temperature_coefficient_k_inv:
+            crate::film::corrections::VG68_TEMPERATURE_VISCOSITY_PER_K,
         fluid_conductivity_w_mk: 0.14,
         solid_conductivity_w_mk: 46.6,
         solid_density_kg_m3: 7830.0,

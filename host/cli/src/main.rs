@@ -24,7 +24,8 @@ enum Command {
     Film(cli::film::FilmArgs),
     /// Static equilibrium of a bearing under a radial load (lubricated, and dry with --dry).
     Static(cli::statics::StaticArgs),
-    /// Stribeck curve of a bearing: friction torque and power loss against speed.
+    /// Stribeck curve of a bearing (friction torque and power loss against speed) or of one
+    /// contact (friction coefficient against speed).
     Friction(cli::friction::FrictionArgs),
     /// Flexible-shaft simulator: static, modes, campbell, run, sweep.
     Shaft(cli::shaft::ShaftArgs),

@@ -46,18 +46,16 @@ pub struct BearingConfig {
 }
 
 /// `[film_corrections]`: the thermal and starvation factors applied after the film model.
-#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct FilmCorrectionsConfig {
     /// Inlet shear heating (Gupta et al. 1992).
     #[serde(default)]
     pub thermal: bool,
-    /// β of η = η₀·e^(−β(T − T₀)) (1/K).
-    #[serde(default = "default_temperature_viscosity")]
-    pub temperature_viscosity_per_k: f32,
-    /// Oil thermal conductivity K (W/(m·K)).
-    #[serde(default = "default_conductivity")]
-    pub thermal_conductivity_w_per_m_k: f32,
+    /// β (1/K): set in `[lubricant]`; here only if it equals that value.
+    pub temperature_viscosity_per_k: Option<f32>,
+    /// K (W/(m·K)): set in `[lubricant]`; here only if it equals that value.
+    pub thermal_conductivity_w_per_m_k: Option<f32>,
     /// Limited inlet supply (Chevalier et al. 1998).
     #[serde(default)]
     pub starvation: bool,
@@ -67,33 +65,23 @@ pub struct FilmCorrectionsConfig {
     pub starvation_exponent: Option<f32>,
 }
 
+/// An ISO VG 68 mineral oil's 0.034 1/K (docs/physics.md §5.4).
 fn default_temperature_viscosity() -> f32 {
     VG68_TEMPERATURE_VISCOSITY_PER_K
 }
+/// 0.14 W/(m·K), a mineral oil's (docs/physics.md §5.4, §8.3).
 fn default_conductivity() -> f32 {
     OIL_THERMAL_CONDUCTIVITY_W_PER_M_K
 }
 
-impl Default for FilmCorrectionsConfig {
-    fn default() -> Self {
-        Self {
-            thermal: false,
-            temperature_viscosity_per_k: default_temperature_viscosity(),
-            thermal_conductivity_w_per_m_k: default_conductivity(),
-            starvation: false,
-            oil_layer_m: None,
-            starvation_exponent: None,
-        }
-    }
-}
-
 impl FilmCorrectionsConfig {
-    /// The core's corrections; the error names the first refused (or missing: value NaN) field.
-    pub fn corrections(&self) -> Result<FilmCorrections, ParamError> {
+    /// The core's corrections with the oil's thermal properties of `lubricant`; the error names
+    /// the first refused (or missing: value NaN) field.
+    pub fn corrections(&self, lubricant: &LubricantConfig) -> Result<FilmCorrections, ParamError> {
         let thermal = if self.thermal {
             Some(ThermalCorrection::new(
-                self.temperature_viscosity_per_k,
-                self.thermal_conductivity_w_per_m_k,
+                lubricant.temperature_viscosity_per_k,
+                lubricant.thermal_conductivity_w_per_m_k,
             )?)
         } else {
             None
@@ -152,6 +140,13 @@ pub struct LubricantConfig {
     pub pressure_viscosity_pa_inv: f32,
     /// ρ₀ (kg/m³).
     pub density_kg_m3: f32,
+    /// β of η = η₀·e^(−β(T − T₀)) (1/K): the film's thermal correction (docs/physics.md §5.4)
+    /// and the friction's thermal traction and rolling resistance (§8.3) both use it.
+    #[serde(default = "default_temperature_viscosity")]
+    pub temperature_viscosity_per_k: f32,
+    /// The oil's thermal conductivity K (W/(m·K)), for the same two.
+    #[serde(default = "default_conductivity")]
+    pub thermal_conductivity_w_per_m_k: f32,
 }
 
 /// `[model]`.
@@ -220,10 +215,12 @@ pub struct FrictionConfig {
     pub boundary_friction_coefficient: f32,
     /// τ₀ (Pa).
     pub eyring_stress_pa: f32,
-    /// β_T (1/K).
-    pub viscosity_temperature_coefficient_k_inv: f32,
-    /// K (W/(m·K)).
-    pub fluid_conductivity_w_mk: f32,
+    /// β_T (1/K): set in `[lubricant]` (`temperature_viscosity_per_k`); here only if it equals
+    /// that value.
+    pub viscosity_temperature_coefficient_k_inv: Option<f32>,
+    /// K (W/(m·K)): set in `[lubricant]` (`thermal_conductivity_w_per_m_k`); here only if it
+    /// equals that value.
+    pub fluid_conductivity_w_mk: Option<f32>,
     /// K′ (W/(m·K)).
     pub solid_conductivity_w_mk: f32,
     /// ρ′ (kg/m³).
@@ -244,8 +241,8 @@ impl Default for FrictionConfig {
             boundary_shear_strength_pa: d.boundary_shear_strength_pa,
             boundary_friction_coefficient: d.boundary_friction_coefficient,
             eyring_stress_pa: d.eyring_stress_pa,
-            viscosity_temperature_coefficient_k_inv: d.viscosity_temperature_coefficient_k_inv,
-            fluid_conductivity_w_mk: d.fluid_conductivity_w_mk,
+            viscosity_temperature_coefficient_k_inv: None,
+            fluid_conductivity_w_mk: None,
             solid_conductivity_w_mk: d.solid_conductivity_w_mk,
             solid_density_kg_m3: d.solid_density_kg_m3,
             solid_heat_capacity_j_kgk: d.solid_heat_capacity_j_kgk,
@@ -255,8 +252,9 @@ impl Default for FrictionConfig {
 }
 
 impl FrictionConfig {
-    /// The table as the core's [`FrictionDesign`].
-    pub fn design(&self) -> FrictionDesign {
+    /// The table as the core's [`FrictionDesign`], with the oil's thermal properties of
+    /// `lubricant`.
+    pub fn design(&self, lubricant: &LubricantConfig) -> FrictionDesign {
         FrictionDesign {
             composite_roughness_m: self.composite_roughness_m,
             asperity_density_m2: self.asperity_density_m2,
@@ -264,8 +262,8 @@ impl FrictionConfig {
             boundary_shear_strength_pa: self.boundary_shear_strength_pa,
             boundary_friction_coefficient: self.boundary_friction_coefficient,
             eyring_stress_pa: self.eyring_stress_pa,
-            viscosity_temperature_coefficient_k_inv: self.viscosity_temperature_coefficient_k_inv,
-            fluid_conductivity_w_mk: self.fluid_conductivity_w_mk,
+            viscosity_temperature_coefficient_k_inv: lubricant.temperature_viscosity_per_k,
+            fluid_conductivity_w_mk: lubricant.thermal_conductivity_w_per_m_k,
             solid_conductivity_w_mk: self.solid_conductivity_w_mk,
             solid_density_kg_m3: self.solid_density_kg_m3,
             solid_heat_capacity_j_kgk: self.solid_heat_capacity_j_kgk,
@@ -341,13 +339,74 @@ impl BearingConfig {
                 ),
             });
         }
-        let params = config.params().map_err(|e| ConfigError {
-            path: path.to_owned(),
-            line: lines.line_of_key(e.field),
-            field: Some(e.field.to_owned()),
-            message: e.to_string(),
+        config.check_thermal_properties(&lines, path)?;
+        let params = config.params().map_err(|e| {
+            // The core's friction names the oil's properties by its own fields; the file sets
+            // them in `[lubricant]`.
+            let field = match e.field {
+                "viscosity_temperature_coefficient_k_inv" => "temperature_viscosity_per_k",
+                "fluid_conductivity_w_mk" => "thermal_conductivity_w_per_m_k",
+                other => other,
+            };
+            ConfigError {
+                path: path.to_owned(),
+                line: lines.line_of_key(field),
+                field: Some(field.to_owned()),
+                message: e.to_string(),
+            }
         })?;
         Ok((config, params))
+    }
+
+    /// Refuses a copy of the oil's β or K in `[friction]` or `[film_corrections]` that differs
+    /// from `[lubricant]`, the one source of both, naming its line and field.
+    fn check_thermal_properties(&self, lines: &TomlLines, path: &Path) -> Result<(), ConfigError> {
+        let l = &self.lubricant;
+        let copies = [
+            (
+                "friction",
+                "viscosity_temperature_coefficient_k_inv",
+                self.friction.viscosity_temperature_coefficient_k_inv,
+                "temperature_viscosity_per_k",
+                l.temperature_viscosity_per_k,
+            ),
+            (
+                "friction",
+                "fluid_conductivity_w_mk",
+                self.friction.fluid_conductivity_w_mk,
+                "thermal_conductivity_w_per_m_k",
+                l.thermal_conductivity_w_per_m_k,
+            ),
+            (
+                "film_corrections",
+                "temperature_viscosity_per_k",
+                self.film_corrections.temperature_viscosity_per_k,
+                "temperature_viscosity_per_k",
+                l.temperature_viscosity_per_k,
+            ),
+            (
+                "film_corrections",
+                "thermal_conductivity_w_per_m_k",
+                self.film_corrections.thermal_conductivity_w_per_m_k,
+                "thermal_conductivity_w_per_m_k",
+                l.thermal_conductivity_w_per_m_k,
+            ),
+        ];
+        for (table, key, copy, source_key, source) in copies {
+            if let Some(v) = copy.filter(|&v| v != source) {
+                return Err(ConfigError {
+                    path: path.to_owned(),
+                    line: lines.line_in_table(table, 0, key),
+                    field: Some(key.to_owned()),
+                    message: format!(
+                        "[{table}] {key} = {v} differs from [lubricant] {source_key} = {source}: \
+                             the oil's thermal properties are set once, in [lubricant] (remove \
+                             this key or give it the same value)"
+                    ),
+                });
+            }
+        }
+        Ok(())
     }
 
     /// The file's fields as the core's [`BearingDesign`] (the contact law's name checked; the
@@ -389,8 +448,8 @@ impl BearingConfig {
         let params = self
             .design()?
             .params()?
-            .with_film_corrections(self.film_corrections.corrections()?)
-            .with_friction(self.friction.design().params()?);
+            .with_film_corrections(self.film_corrections.corrections(&self.lubricant)?)
+            .with_friction(self.friction.design(&self.lubricant).params()?);
         let params = if self.model.centrifugal {
             params.with_centrifugal_force(self.model.roller_density_kg_m3)?
         } else {
@@ -439,147 +498,5 @@ impl BearingConfig {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn bundled(name: &str) -> PathBuf {
-        Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../../configs")
-            .join(name)
-    }
-
-    #[test]
-    fn bundled_configs_load() {
-        for name in ["hub_motor.toml", "nu205.toml", "static_check.toml"] {
-            let (c, p) = BearingConfig::load(&bundled(name)).unwrap_or_else(|e| panic!("{e}"));
-            assert_eq!(p.geometry().roller_count(), c.geometry.roller_count);
-        }
-    }
-
-    #[test]
-    fn refused_value_names_file_line_and_field() {
-        let text = std::fs::read_to_string(bundled("hub_motor.toml")).unwrap();
-        let bad = text.replace("roller_diameter_m = 0.0088", "roller_diameter_m = 0.07");
-        let e = BearingConfig::parse(&bad, Path::new("bad.toml")).unwrap_err();
-        let expected_line = bad
-            .lines()
-            .position(|l| l.starts_with("roller_diameter_m"))
-            .unwrap()
-            + 1;
-        assert_eq!(e.line, Some(expected_line));
-        assert_eq!(e.field.as_deref(), Some("roller_diameter_m"));
-        let shown = e.to_string();
-        assert!(
-            shown.starts_with(&format!(
-                "bad.toml:{expected_line}: field `roller_diameter_m`"
-            )),
-            "{shown}"
-        );
-        assert!(shown.contains("pitch_diameter_m"), "{shown}");
-    }
-
-    #[test]
-    fn friction_table_is_optional_and_its_values_are_checked() {
-        let text = std::fs::read_to_string(bundled("nu205.toml")).unwrap();
-        let (_, params) = BearingConfig::parse(&text, Path::new("nu205.toml")).unwrap();
-        assert_eq!(*params.friction(), bearing_core::FrictionParams::DEFAULT);
-        let rough = format!("{text}\n[friction]\ncomposite_roughness_m = 0.3e-6\n");
-        let (_, params) = BearingConfig::parse(&rough, Path::new("rough.toml")).unwrap();
-        assert_eq!(params.friction().composite_roughness_m(), 0.3e-6);
-        // An oil's conductivity of 1600 W/(m·K) (a metal's order) is refused at its line.
-        let bad = format!("{text}\n[friction]\nfluid_conductivity_w_mk = 1600.0\n");
-        let e = BearingConfig::parse(&bad, Path::new("bad.toml")).unwrap_err();
-        assert_eq!(e.line, Some(line_of(&bad, "fluid_conductivity_w_mk")));
-        assert_eq!(e.field.as_deref(), Some("fluid_conductivity_w_mk"));
-        assert!(e.to_string().contains("[0.01, 10]"), "{e}");
-    }
-
-    /// The line of `prefix…` in `text` (1-based).
-    fn line_of(text: &str, prefix: &str) -> usize {
-        text.lines().position(|l| l.starts_with(prefix)).unwrap() + 1
-    }
-
-    /// The high-speed switches reach the core's parameters (off in `hub_motor.toml`, on in
-    /// `hub_motor_high_speed.toml`), and a refused value names its line and field.
-    #[test]
-    fn high_speed_switches_reach_the_params_and_bad_values_are_located() {
-        let (_, plain) = BearingConfig::load(&bundled("hub_motor.toml")).unwrap();
-        assert!(plain.film_corrections().is_off());
-        assert_eq!(plain.centrifugal_force_n(2199.0), None);
-        let text = std::fs::read_to_string(bundled("hub_motor_high_speed.toml")).unwrap();
-        let (_, on) = BearingConfig::parse(&text, Path::new("h.toml")).unwrap();
-        let c = on.film_corrections();
-        assert!(c.thermal.is_some() && c.starvation.is_some());
-        assert!(on.centrifugal_force_n(2199.0).unwrap() > 180.0);
-        for (key, bad) in [
-            ("oil_layer_m", "oil_layer_m = -1.0"),
-            (
-                "thermal_conductivity_w_per_m_k",
-                "thermal_conductivity_w_per_m_k = 0.0",
-            ),
-            ("roller_density_kg_m3", "roller_density_kg_m3 = 1.0e9"),
-        ] {
-            let original = text.lines().find(|l| l.starts_with(key)).unwrap();
-            let bad_text = text.replace(original, bad);
-            let e = BearingConfig::parse(&bad_text, Path::new("h.toml")).unwrap_err();
-            assert_eq!(e.line, Some(line_of(&bad_text, key)), "{e}");
-            assert_eq!(e.field.as_deref(), Some(key), "{e}");
-        }
-    }
-
-    #[test]
-    fn an_unknown_contact_law_is_named_with_the_laws_allowed() {
-        let text = std::fs::read_to_string(bundled("hub_motor.toml")).unwrap();
-        let bad = text.replace("contact_law = \"palmgren\"", "contact_law = \"hertz\"");
-        let e = BearingConfig::parse(&bad, Path::new("c.toml")).unwrap_err();
-        assert_eq!(e.line, Some(line_of(&bad, "contact_law")));
-        let shown = e.to_string();
-        assert!(shown.contains("\"hertz\""), "{shown}");
-        assert!(shown.contains("\"palmgren\", \"lundberg\""), "{shown}");
-        assert!(!shown.contains("NaN"), "{shown}");
-    }
-
-    #[test]
-    fn a_roller_count_the_host_cannot_step_is_refused_at_load_with_its_line() {
-        let text = std::fs::read_to_string(bundled("hub_motor.toml")).unwrap();
-        for count in [3, 5] {
-            let bad = text.replace("roller_count = 17", &format!("roller_count = {count}"));
-            let e = BearingConfig::parse(&bad, Path::new("r.toml")).unwrap_err();
-            assert_eq!(e.line, Some(line_of(&bad, "roller_count")), "{e}");
-            assert!(e.to_string().contains("[6, 40]"), "{e}");
-        }
-    }
-
-    #[test]
-    fn a_type_error_names_the_field() {
-        let text = std::fs::read_to_string(bundled("hub_motor.toml")).unwrap();
-        let bad = text.replace("roller_count = 17", "roller_count = \"x\"");
-        let e = BearingConfig::parse(&bad, Path::new("t.toml")).unwrap_err();
-        assert_eq!(e.line, Some(line_of(&bad, "roller_count")));
-        assert_eq!(e.field.as_deref(), Some("roller_count"), "{e}");
-    }
-
-    #[test]
-    fn syntax_and_unknown_fields_are_located() {
-        let e = BearingConfig::parse(
-            "name = \"x\"\n[geometry]\npitch_diameter_m = \"a\"\n",
-            Path::new("s.toml"),
-        )
-        .unwrap_err();
-        assert_eq!(e.line, Some(3), "{e}");
-        let text = std::fs::read_to_string(bundled("nu205.toml")).unwrap();
-        let bad = text.replace("roller_count = 12", "roller_count = 12\nroller_colour = 3");
-        let e = BearingConfig::parse(&bad, Path::new("u.toml")).unwrap_err();
-        assert!(e.to_string().contains("roller_colour"), "{e}");
-        // The unknown key starts its line: the error points at that line, not the one before.
-        let expected = bad
-            .lines()
-            .position(|l| l.starts_with("roller_colour"))
-            .unwrap()
-            + 1;
-        assert_eq!(e.line, Some(expected), "{e}");
-        let nan = text.replace("viscosity_pa_s = 0.08", "viscosity_pa_s = nan");
-        let e = BearingConfig::parse(&nan, Path::new("n.toml")).unwrap_err();
-        assert_eq!(e.field.as_deref(), Some("viscosity_pa_s"), "{e}");
-    }
-}
+#[path = "config_tests.rs"]
+mod tests;

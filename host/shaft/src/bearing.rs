@@ -59,6 +59,17 @@ pub struct BearingReaction {
     pub rollers: Option<RollerDiagnostics>,
 }
 
+/// Friction of a bearing at a settled state (docs/physics.md §8).
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct BearingFriction {
+    /// Friction torque on the inner ring (N·m).
+    pub torque_nm: f64,
+    /// Power loss (W).
+    pub power_loss_w: f64,
+    /// The power loss split into [rolling, viscous, boundary] (W).
+    pub power_loss_split_w: [f64; 3],
+}
+
 /// A failure of a bearing model (bad input state, a film model outside its domain, …).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("bearing model: {0}")]
@@ -79,6 +90,11 @@ pub trait BearingModel: Send {
     /// Per-roller states of the last evaluation (None for models without rollers).
     fn roller_states(&self) -> Option<Vec<RollerState>> {
         None
+    }
+    /// Friction at the last settled state and spin speed Ω (rad/s); None for models without
+    /// a friction model.
+    fn friction(&mut self, _spin_speed: f64) -> Result<Option<BearingFriction>, BearingError> {
+        Ok(None)
     }
 }
 

@@ -1,4 +1,5 @@
-//! PNG plots (plotters, bitmap backend): Campbell diagram, orbit, spectrum and sweep envelopes.
+//! PNG plots (plotters, bitmap backend): Campbell diagram, orbit, spectrum, sweep envelopes and
+//! the sweep's power loss.
 
 use std::path::Path;
 
@@ -233,6 +234,71 @@ pub fn envelopes(points: &[SweepPoint], path: &Path) -> PlotResult {
             .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], RED));
         chart.draw_series(dry.iter().map(|&p| Cross::new(p, 4, RED)))?;
         draw_legend(&mut chart, SeriesLabelPosition::MiddleRight)?;
+    }
+    root.present()?;
+    Ok(())
+}
+
+/// Power loss of the roller bearings against speed at each speed's static equilibrium,
+/// lubricated (solid, circles) and dry (thin, crosses): the total on the left, its rolling,
+/// viscous and boundary parts on the right (docs/shaft.md).
+pub fn power_loss(points: &[SweepPoint], path: &Path) -> PlotResult {
+    let root = BitMapBackend::new(path, (1400, 600)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let areas = root.split_evenly((1, 2));
+    let (r0, r1) = range_of(points.iter().map(|p| p.speed_rpm));
+    type Get = fn(&super::bearing::BearingFriction) -> f64;
+    type Series<'a> = (&'a str, RGBColor, Get);
+    let total: [Series; 1] = [("total", BLACK, |f| f.power_loss_w)];
+    let parts: [Series; 3] = [
+        ("rolling", BLUE, |f| f.power_loss_split_w[0]),
+        ("viscous", GREEN, |f| f.power_loss_split_w[1]),
+        ("boundary", RED, |f| f.power_loss_split_w[2]),
+    ];
+    let panels: [(&str, &[Series]); 2] = [
+        ("roller bearings: power loss (W)", &total),
+        ("power loss by part (W)", &parts),
+    ];
+    for ((title, series), area) in panels.iter().zip(areas.iter()) {
+        let curve = |side: usize, get: Get| -> Vec<(f64, f64)> {
+            points
+                .iter()
+                .filter_map(|p| p.friction[side].map(|f| (p.speed_rpm, get(&f))))
+                .collect()
+        };
+        let all = series
+            .iter()
+            .flat_map(|(_, _, get)| [curve(0, *get), curve(1, *get)])
+            .flatten()
+            .map(|p| p.1);
+        let (v0, v1) = range_of(all);
+        let mut chart = ChartBuilder::on(area)
+            .caption(*title, ("sans-serif", 18))
+            .margin(10)
+            .x_label_area_size(35)
+            .y_label_area_size(75)
+            .build_cartesian_2d(r0..r1, v0.min(0.0)..v1)?;
+        chart
+            .configure_mesh()
+            .x_desc("speed (rpm)")
+            .y_label_formatter(&|v| format!("{v:.3e}"))
+            .draw()?;
+        for &(name, colour, get) in series.iter() {
+            let (lub, dry) = (curve(0, get), curve(1, get));
+            chart
+                .draw_series(LineSeries::new(lub.clone(), colour.stroke_width(2)))?
+                .label(format!("{name}, lubricated"))
+                .legend(move |(x, y)| {
+                    PathElement::new([(x, y), (x + 20, y)], colour.stroke_width(2))
+                });
+            chart.draw_series(lub.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+            chart
+                .draw_series(LineSeries::new(dry.clone(), colour.stroke_width(1)))?
+                .label(format!("{name}, dry loads"))
+                .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], colour));
+            chart.draw_series(dry.iter().map(|&p| Cross::new(p, 4, colour)))?;
+        }
+        draw_legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
     }
     root.present()?;
     Ok(())

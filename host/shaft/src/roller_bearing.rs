@@ -16,9 +16,12 @@ use std::path::Path;
 use bearing_core::bearing::SETTLE_STEPS;
 use bearing_core::{DynBearing, FilmKind, OperatingState, OutputView, ParamError};
 
-use super::bearing::{BearingError, BearingModel, BearingReaction, BearingState, RollerState};
+use super::bearing::{
+    BearingError, BearingFriction, BearingModel, BearingReaction, BearingState, RollerState,
+};
 use super::core_bearing::{roller_states, summarise};
 use bearing_host_common::config::BearingConfig;
+use bearing_host_common::friction::{bearing_friction_at_loads, LoadSharing};
 use bearing_host_common::rolling::boxed;
 
 /// The core roller bearing as a shaft bearing.
@@ -105,6 +108,39 @@ impl BearingModel for RollerBearing {
 
     fn roller_states(&self) -> Option<Vec<RollerState>> {
         Some(roller_states(&self.bearing.output()))
+    }
+
+    /// The core's friction pass on the lubricated bearing (its own loads and films). The dry
+    /// bearing has no film: its roller loads, with the films the regression formulas give at
+    /// those loads (and the bearing's film corrections), go through the same pass on the host
+    /// (`bearing_host_common::friction`), so that lubricated against dry shows what the
+    /// film-coupled load sharing does to the loss (docs/shaft.md).
+    fn friction(&mut self, spin_speed: f64) -> Result<Option<BearingFriction>, BearingError> {
+        let omega = spin_speed as f32;
+        let (torque, power, split) = if self.bearing.film() == FilmKind::Dry {
+            let o = self.bearing.output();
+            let loads: Vec<f32> = o.rollers.iter().map(|r| r.load_n).collect();
+            let f = bearing_friction_at_loads(
+                self.bearing.params(),
+                &loads,
+                o.centrifugal_force_n,
+                omega,
+                LoadSharing::WholeLoadFilm,
+            )
+            .bearing;
+            (f.torque_nm, f.power_loss_w, f.power_loss_split_w)
+        } else {
+            let o = self
+                .bearing
+                .friction(omega)
+                .map_err(|e| BearingError(format!("friction at {spin_speed} rad/s: {e}")))?;
+            (o.friction_torque_nm, o.power_loss_w, o.power_loss_split_w)
+        };
+        Ok(Some(BearingFriction {
+            torque_nm: f64::from(torque),
+            power_loss_w: f64::from(power),
+            power_loss_split_w: split.map(f64::from),
+        }))
     }
 }
 

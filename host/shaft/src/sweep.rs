@@ -4,11 +4,12 @@
 
 use rayon::prelude::*;
 
-use super::bearing::{BearingSpec, FilmKind};
+use super::bearing::{BearingFriction, BearingSpec, FilmKind};
 use super::model::RotorModel;
-use super::operating::{operating_modes, OperatingError};
+use super::operating::{build_bearings, linearise, operating_modes, OperatingError};
 use super::simulate::{run, Envelope, RunError, RunResult, RunSettings};
 use super::spectrum::amplitude_spectrum;
+use super::statics::equilibrium;
 
 /// Natural frequencies kept per speed and side (the lowest, with the bearings linearised).
 pub const SWEEP_MODES: usize = 4;
@@ -49,6 +50,9 @@ pub struct SweepPoint {
     /// Lowest natural frequencies (Hz) with the bearings linearised at the static equilibrium
     /// of this speed (lubricated, dry): where the system resonances sit.
     pub natural_frequencies_hz: [Vec<f64>; 2],
+    /// Friction of the roller bearings summed, at the static equilibrium of this speed
+    /// (lubricated, dry; None without roller bearings): see [`friction_at_equilibrium`].
+    pub friction: [Option<BearingFriction>; 2],
 }
 
 /// Spectrum of the first probe's (first bearing's) y displacement of a run.
@@ -74,6 +78,37 @@ pub fn natural_frequencies_hz(
         .iter()
         .map(|md| md.frequency / (2.0 * std::f64::consts::PI))
         .collect())
+}
+
+/// The friction torque, power loss and split of the rotor's roller bearings, summed, at the
+/// static equilibrium at Ω (rad/s) with the given bearings; None when no bearing has a
+/// friction model. Each bearing's own roller loads at that equilibrium; the dry bearing's
+/// films from the regression formulas at its loads (see the roller bearing's `friction`).
+pub fn friction_at_equilibrium(
+    model: &RotorModel,
+    specs: &[BearingSpec],
+    spin_speed: f64,
+) -> Result<Option<BearingFriction>, OperatingError> {
+    let mut m = model.clone();
+    for (b, s) in m.description.bearings.iter_mut().zip(specs) {
+        b.spec = s.clone();
+    }
+    let mut bearings = build_bearings(&m)?;
+    let eq = equilibrium(&m, spin_speed, &mut bearings)?;
+    // Settles every bearing at the equilibrium, so its output is that state's.
+    linearise(&m, &mut bearings, &eq.q, spin_speed)?;
+    let mut total: Option<BearingFriction> = None;
+    for b in &mut bearings {
+        if let Some(f) = b.friction(spin_speed)? {
+            let t = total.get_or_insert_with(BearingFriction::default);
+            t.torque_nm += f.torque_nm;
+            t.power_loss_w += f.power_loss_w;
+            for (a, x) in t.power_loss_split_w.iter_mut().zip(f.power_loss_split_w) {
+                *a += x;
+            }
+        }
+    }
+    Ok(total)
 }
 
 /// Runs the sweep. `lubricated_film` replaces the film of every roller bearing on the lubricated
@@ -123,6 +158,10 @@ pub fn sweep(
                     inner_race_spectrum(&dr, sample_dt),
                 ],
                 natural_frequencies_hz: [natural(&specs)?, natural(&dry)?],
+                friction: [
+                    friction_at_equilibrium(model, &specs, omega)?,
+                    friction_at_equilibrium(model, &dry, omega)?,
+                ],
             })
         })
         .collect()
@@ -222,6 +261,7 @@ mod tests {
             resolution_limited_steps: [0; 2],
             spectra: [Vec::new(), Vec::new()],
             natural_frequencies_hz: [vec![f1[0]], vec![f1[1]]],
+            friction: [None, None],
         }
     }
 

@@ -119,7 +119,7 @@ pub(crate) fn max_load_n(length_m: f64, radius_m: f64, modulus_pa: f64) -> f64 {
 
 /// Refuses a contact whose peak Hertz pressure exceeds what bearing steel carries, naming the
 /// load flag and the largest load allowed for this contact.
-fn check_hertz(flag: &str, contact: &ContactInput) -> anyhow::Result<()> {
+pub(super) fn check_hertz(flag: &str, contact: &ContactInput) -> anyhow::Result<()> {
     let (q, l) = (f64::from(contact.load_n), f64::from(contact.length_m));
     let (r, e) = (
         f64::from(contact.reduced_radius_m),

@@ -1,7 +1,8 @@
 //! `bearing friction`: the Stribeck curve of a bundled bearing — friction torque, power loss
 //! and its split into rolling, viscous and boundary parts against shaft speed, with the film
-//! ratio λ of the most loaded contact — beside Palmgren's empirical torque
-//! (docs/friction.md, docs/physics.md §8).
+//! ratio λ of the most loaded contact — beside Palmgren's empirical torque and the torque with
+//! the film re-solved for the load the asperities leave it (docs/friction.md, docs/physics.md
+//! §8); with `--contact`, the same for one contact ([`super::friction_contact`]).
 
 use std::path::{Path, PathBuf};
 
@@ -14,20 +15,29 @@ use serde_json::json;
 use super::common::{non_negative, positive, print_json, rad_per_s};
 use super::statics::solve;
 use bearing_host_common::config::BearingConfig;
+use bearing_host_common::friction::{bearing_friction_at_loads, LoadSharing};
 use bearing_host_common::output::write_with;
 use bearing_host_common::plot_style::draw_legend;
 use bearing_host_common::rolling::boxed;
 
 /// Stribeck curve of a bearing under a radial load: friction torque and power loss against
-/// shaft speed, at speeds spaced evenly in log from --min-rpm to --max-rpm.
+/// shaft speed, at speeds spaced evenly in log from --min-rpm to --max-rpm; or, with
+/// --contact and --roller-load, of one roller–race contact: its friction coefficient and
+/// split.
 #[derive(Args, Debug)]
 pub struct FrictionArgs {
     /// Bearing configuration (TOML); its `[friction]` table sets the friction model.
     #[arg(long)]
     pub config: PathBuf,
     /// Radial load on the inner race (N); default: the config's `[case]`.
-    #[arg(long, value_parser = non_negative)]
+    #[arg(long, value_parser = non_negative, conflicts_with = "contact")]
     pub radial_load: Option<f64>,
+    /// One contact of a roller instead of the bearing: its friction coefficient against speed.
+    #[arg(long, value_enum, requires = "roller_load")]
+    pub contact: Option<super::friction_contact::ContactSide>,
+    /// The contact's load Q (N), with --contact.
+    #[arg(long, value_parser = positive, requires = "contact")]
+    pub roller_load: Option<f64>,
     /// Lowest shaft speed (rpm).
     #[arg(long, default_value_t = 10.0, value_parser = positive)]
     pub min_rpm: f64,
@@ -59,6 +69,17 @@ struct Point {
     split_w: [f64; 3],
     lambda_min: f64,
     palmgren_nm: f64,
+    /// Host films at the step's roller loads: [film of the whole load (the core's load
+    /// sharing), film re-solved for Q − W_a].
+    sharing: [SharingPoint; 2],
+}
+
+/// The bearing's friction at one speed with one way of sharing the load.
+struct SharingPoint {
+    torque_nm: f64,
+    power_w: f64,
+    asperity_load_n: f64,
+    lambda_min: f64,
 }
 
 /// Palmgren's empirical friction torque M = M₀ + M₁ (N·m) of a roller bearing (Harris &
@@ -87,7 +108,6 @@ pub fn palmgren_torque_nm(
 /// Run `bearing friction`.
 pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
     let (config, params) = BearingConfig::load(&args.config)?;
-    let load = super::statics::radial_load_n(args.radial_load, &config)?;
     if args.min_rpm >= args.max_rpm {
         bail!(
             "--min-rpm = {} must be below --max-rpm = {}",
@@ -95,14 +115,17 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
             args.max_rpm
         );
     }
-    let max_rpm =
-        f64::from(bearing_core::params::MAX_SHAFT_SPEED_RAD_S) * 30.0 / std::f64::consts::PI;
-    if args.max_rpm > max_rpm {
-        bail!(
-            "--max-rpm = {} is out of range: allowed up to {max_rpm:.0} rpm",
-            args.max_rpm
-        );
+    if let (Some(side), Some(load)) = (args.contact, args.roller_load) {
+        return super::friction_contact::run(&args, &config, &params, side, load);
     }
+    let load = super::statics::radial_load_n(args.radial_load, &config)?;
+    let load_source = super::statics::value_source(
+        args.radial_load.is_some(),
+        "--radial-load",
+        &args.config,
+        "radial_load_n",
+    );
+    super::statics::check_case(&params, (load, &load_source), (args.max_rpm, "--max-rpm"))?;
     let nu_mm2_s = f64::from(params.lubricant().viscosity_pa_s())
         / f64::from(params.lubricant().density_kg_m3())
         * 1e6;
@@ -131,6 +154,23 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
             dm_mm,
             load,
         );
+        let loads: Vec<f32> = step.rollers.iter().map(|r| r.load_n).collect();
+        let sharing = [LoadSharing::WholeLoadFilm, LoadSharing::Resolved].map(|sharing| {
+            let f = bearing_friction_at_loads(
+                &params,
+                &loads,
+                step.centrifugal_force_n,
+                rad_per_s(rpm),
+                sharing,
+            );
+            let [l_in, l_out] = f.lambda_of_most_loaded().unwrap_or([0.0; 2]);
+            SharingPoint {
+                torque_nm: f64::from(f.bearing.torque_nm),
+                power_w: f64::from(f.bearing.power_loss_w),
+                asperity_load_n: f64::from(f.asperity_load_n()),
+                lambda_min: f64::from(l_in.min(l_out)),
+            }
+        });
         points.push(Point {
             speed_rpm: rpm,
             torque_nm: f64::from(step.friction_torque_nm),
@@ -138,6 +178,7 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
             split_w: step.power_loss_split_w.map(f64::from),
             lambda_min: f64::from(lambda_in.min(lambda_out)),
             palmgren_nm: m0 + m1,
+            sharing,
         });
     }
     if let Some(path) = &args.plot {
@@ -166,6 +207,11 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
                 "lambda_min": p.lambda_min,
                 "lubrication": Lubrication::of(p.lambda_min as f32).name(),
                 "palmgren_torque_nm": p.palmgren_nm,
+                "load_sharing": {
+                    "whole_load_film": sharing_json(&p.sharing[0]),
+                    "resolved_film": sharing_json(&p.sharing[1]),
+                    "torque_change": p.sharing[1].torque_nm / p.sharing[0].torque_nm - 1.0,
+                },
             })).collect::<Vec<_>>(),
         });
         return print_json(&value);
@@ -176,7 +222,7 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
         params.friction().slide_to_roll_ratio()
     );
     println!(
-        "{:>9} {:>11} {:>10} {:>8} {:>8} {:>8} {:>7} {:>10} {:>12}",
+        "{:>9} {:>11} {:>10} {:>8} {:>8} {:>8} {:>7} {:>10} {:>12} {:>11}",
         "rpm",
         "torque N·m",
         "power W",
@@ -185,11 +231,12 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
         "bound %",
         "λ_min",
         "regime",
-        "Palmgren N·m"
+        "Palmgren N·m",
+        "re-solved %"
     );
     for p in &points {
         println!(
-            "{:>9.0} {:>11.5} {:>10.3} {:>8.1} {:>8.1} {:>8.1} {:>7.2} {:>10} {:>12.5}",
+            "{:>9.0} {:>11.5} {:>10.3} {:>8.1} {:>8.1} {:>8.1} {:>7.2} {:>10} {:>12.5} {:>+11.2}",
             p.speed_rpm,
             p.torque_nm,
             p.power_w,
@@ -198,13 +245,27 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
             100.0 * share(p, 2),
             p.lambda_min,
             Lubrication::of(p.lambda_min as f32).name(),
-            p.palmgren_nm
+            p.palmgren_nm,
+            100.0 * (p.sharing[1].torque_nm / p.sharing[0].torque_nm - 1.0)
         );
     }
+    println!(
+        "re-solved %: torque with the film re-solved for Q − W_a against the film of the whole \
+         load Q, both with the regression film at the step's roller loads (docs/friction.md)"
+    );
     if let Some(path) = &args.plot {
         println!("plot: {}", path.display());
     }
     Ok(())
+}
+
+fn sharing_json(s: &SharingPoint) -> serde_json::Value {
+    json!({
+        "friction_torque_nm": s.torque_nm,
+        "power_loss_w": s.power_w,
+        "asperity_load_n": s.asperity_load_n,
+        "lambda_min": s.lambda_min,
+    })
 }
 
 /// Torque (model and Palmgren, log) against speed (log) on top, the power-loss shares

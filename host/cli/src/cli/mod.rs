@@ -11,6 +11,7 @@ pub mod film;
 mod film_plot;
 pub mod fmu;
 pub mod friction;
+pub mod friction_contact;
 pub mod shaft;
 pub mod statics;
 pub mod train;

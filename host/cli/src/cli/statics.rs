@@ -1,7 +1,7 @@
 //! `bearing static`: static equilibrium of the inner race under a radial load, lubricated and
 //! (on request) dry side by side.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context};
 use bearing_core::{DynBearing, FilmKind, OperatingState};
@@ -61,7 +61,7 @@ fn static_load_rating_n(params: &bearing_core::BearingParams) -> f64 {
 
 /// Refuses a radial load above the static load rating or a speed above the core's, naming where
 /// the value came from (`source`: the flag, or the config's field).
-fn check_case(
+pub(super) fn check_case(
     params: &bearing_core::BearingParams,
     (load_n, load_source): (f64, &str),
     (speed_rpm, speed_source): (f64, &str),
@@ -217,6 +217,16 @@ pub(super) fn radial_load_n(flag: Option<f64>, config: &BearingConfig) -> anyhow
         .context("no radial load: give --radial-load N or set [case] radial_load_n in the config")
 }
 
+/// Where a value of a command came from, for its refusal: `flag` when given, else the config
+/// file's `[case]` field.
+pub(super) fn value_source(given: bool, flag: &str, config: &Path, field: &str) -> String {
+    if given {
+        flag.to_string()
+    } else {
+        format!("{} [case] {field}", config.display())
+    }
+}
+
 /// Run `bearing static`.
 pub fn run(args: StaticArgs) -> anyhow::Result<()> {
     let (config, params) = BearingConfig::load(&args.config)?;
@@ -225,15 +235,18 @@ pub fn run(args: StaticArgs) -> anyhow::Result<()> {
         .speed_rpm
         .or(config.case.speed_rpm.map(f64::from))
         .unwrap_or(0.0);
-    let from_config = |field: &str| format!("{} [case] {field}", args.config.display());
-    let load_source = match args.radial_load {
-        Some(_) => "--radial-load".to_string(),
-        None => from_config("radial_load_n"),
-    };
-    let speed_source = match args.speed_rpm {
-        Some(_) => "--speed-rpm".to_string(),
-        None => from_config("speed_rpm"),
-    };
+    let load_source = value_source(
+        args.radial_load.is_some(),
+        "--radial-load",
+        &args.config,
+        "radial_load_n",
+    );
+    let speed_source = value_source(
+        args.speed_rpm.is_some(),
+        "--speed-rpm",
+        &args.config,
+        "speed_rpm",
+    );
     check_case(&params, (load, &load_source), (rpm.abs(), &speed_source))?;
     let speed = rad_per_s(rpm);
     let lubricated = rpm > 0.0;

@@ -1,5 +1,6 @@
 //! `bearing shaft sweep`: steady-state runs over a list of speeds, lubricated and dry side by
-//! side, with envelope and waterfall plots and the lubricated-versus-dry comparison.
+//! side, with envelope, waterfall and power-loss plots and the lubricated-versus-dry
+//! comparison.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -53,7 +54,7 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
         bar.inc(1);
     })?;
     bar.finish_and_clear();
-    // The three plots or none: staged under temporary names, renamed at the end.
+    // The four plots or none: staged under temporary names, renamed at the end.
     let mut files = OutputFiles::new();
     let mut stage = |path: &std::path::Path| {
         files
@@ -89,11 +90,23 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
         .map_err(|e| anyhow::anyhow!("writing {}: {e}", png.display()))?;
         waterfalls.push(png.display().to_string());
     }
+    let power_png = with_suffix(&a.plot.with_extension(""), "_power_loss.png");
+    plots::power_loss(&points, &stage(&power_png)?)
+        .map_err(|e| anyhow::anyhow!("writing {}: {e}", power_png.display()))?;
     files.commit()?;
     let mesh = mesh_orders(&model)
         .into_iter()
         .fold(None, |m: Option<f64>, o| Some(m.map_or(o, |m| m.max(o))));
     let comparison = bearing_shaft::sweep::compare_films(&points, top, mesh);
+    let split = |lub: bool| {
+        let part = |i: usize| {
+            points
+                .iter()
+                .map(|p| p.friction[usize::from(!lub)].map(|f| f.power_loss_split_w[i]))
+                .collect::<Vec<_>>()
+        };
+        serde_json::json!({"rolling": part(0), "viscous": part(1), "boundary": part(2)})
+    };
     let side = |lub: bool| {
         let e = |p: &bearing_shaft::sweep::SweepPoint| if lub { p.lubricated } else { p.dry };
         serde_json::json!({
@@ -106,6 +119,9 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
             "steadiness": points.iter().map(|p| p.steadiness[usize::from(!lub)]).collect::<Vec<_>>(),
             "resolution_limited_steps": points.iter().map(|p| p.resolution_limited_steps[usize::from(!lub)]).collect::<Vec<_>>(),
             "natural_frequencies_hz": points.iter().map(|p| p.natural_frequencies_hz[usize::from(!lub)].clone()).collect::<Vec<_>>(),
+            "friction_torque_nm": points.iter().map(|p| p.friction[usize::from(!lub)].map(|f| f.torque_nm)).collect::<Vec<_>>(),
+            "power_loss_w": points.iter().map(|p| p.friction[usize::from(!lub)].map(|f| f.power_loss_w)).collect::<Vec<_>>(),
+            "power_loss_split_w": split(lub),
         })
     };
     if a.model.json {
@@ -118,7 +134,7 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
         return Ok(());
     }
     println!(
-        "{:>8} {:>13} {:>13} {:>11} {:>11} {:>11} {:>11} {:>9} {:>9}",
+        "{:>8} {:>13} {:>13} {:>11} {:>11} {:>11} {:>11} {:>9} {:>11} {:>11} {:>9}",
         "rpm",
         "k_b lub (N/m)",
         "k_b dry (N/m)",
@@ -127,8 +143,13 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
         "u dry (µm)",
         "f1 lub (Hz)",
         "f1 dry",
+        "P lub (W)",
+        "P dry (W)",
         "steady"
     );
+    let power = |p: &bearing_shaft::sweep::SweepPoint, side: usize| {
+        p.friction[side].map_or(f64::NAN, |f| f.power_loss_w)
+    };
     let f1 = |p: &bearing_shaft::sweep::SweepPoint, side: usize| {
         p.natural_frequencies_hz[side]
             .first()
@@ -137,7 +158,7 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
     };
     for p in &points {
         println!(
-            "{:>8.0} {:>13.4e} {:>13.4e} {:>11.4} {:>11.4} {:>11.4} {:>11.2} {:>9.2} {:>9.1e}",
+            "{:>8.0} {:>13.4e} {:>13.4e} {:>11.4} {:>11.4} {:>11.4} {:>11.2} {:>9.2} {:>11.2} {:>11.2} {:>9.1e}",
             p.speed_rpm,
             p.lubricated.max_bearing_stiffness_n_per_m,
             p.dry.max_bearing_stiffness_n_per_m,
@@ -146,6 +167,8 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
             p.dry.max_displacement_m * 1e6,
             f1(p, 0),
             f1(p, 1),
+            power(p, 0),
+            power(p, 1),
             p.steadiness[0].max(p.steadiness[1])
         );
     }
@@ -176,6 +199,15 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
             c.peak_response_speed_rpm[1]
         );
     }
-    println!("plots: {}, {}", a.plot.display(), waterfalls.join(", "));
+    println!(
+        "P: power loss of the roller bearings at the static equilibrium of each speed; dry: the \
+         dry bearing's roller loads with the regression film at those loads (docs/shaft.md)"
+    );
+    println!(
+        "plots: {}, {}, {}",
+        a.plot.display(),
+        waterfalls.join(", "),
+        power_png.display()
+    );
     Ok(())
 }
