@@ -21,7 +21,7 @@ pub fn default_trace() -> PathBuf {
 pub fn describe(error: &KernelError) -> String {
     match error {
         KernelError::UnknownBearing => {
-            "unknown bearing identifier (known: hub_motor, nu205)".to_string()
+            "unknown bearing identifier (known: hub_motor, hub_motor_hs, nu205)".to_string()
         }
         KernelError::UnknownLubricant => {
             "unknown lubricant identifier (known: thesis_oil, thesis_oil_hs)".to_string()
@@ -68,11 +68,20 @@ impl BearingStepper for KernelStepper {
     }
 
     fn step(&mut self, sample: &Sample, out: &mut StepOutputs) -> Result<(), StepFault> {
-        self.kernel.step(sample, out).map_err(|fault| match fault {
-            KernelFault::Rejected(e) => StepFault {
-                reason: format!("the core refused the sample: {e}"),
-            },
-        })
+        self.kernel.step(sample, out).map_err(refused)
+    }
+
+    fn friction(&mut self, sample: &Sample, out: &mut StepOutputs) -> Result<(), StepFault> {
+        self.kernel.friction(sample, out).map_err(refused)
+    }
+}
+
+/// The stepper's fault for a sample the core refused.
+fn refused(fault: KernelFault) -> StepFault {
+    match fault {
+        KernelFault::Rejected(e) => StepFault {
+            reason: format!("the core refused the sample: {e}"),
+        },
     }
 }
 

@@ -77,6 +77,12 @@ fn firmware_replay_matches_the_host_bit_for_bit_and_counts_deterministically() {
     assert!(first.instructions_per_step.min > 0);
     // The core's fixed-work rule (docs/architecture.md): every step the same instruction count.
     assert!(first.deterministic, "{:?}", first.instructions_per_step);
+    // … and every friction call after the step the same count, apart from the step's.
+    let friction = first.friction_instructions_per_step;
+    assert!(
+        friction.min > 0 && friction.min == friction.max,
+        "{friction:?}"
+    );
     assert!(first.flash_bytes > 1000 && first.flash_bytes < 1024 * 1024);
     assert!(first.stack_bytes > 0 && u64::from(first.stack_bytes) + first.ram_bytes < 128 * 1024);
     assert!(first.loop_stack_bytes > 0 && first.loop_stack_bytes < first.stack_bytes);

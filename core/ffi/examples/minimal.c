@@ -1,5 +1,6 @@
 /* The smallest complete use of the bearing library: build the hub-motor bearing in static
-   storage, settle it, take ten real-time steps and print the force. */
+   storage, settle it, take ten real-time steps and print the force, then the friction of the
+   last step. */
 #include <stdio.h>
 
 #include "bearing.h"
@@ -34,5 +35,16 @@ int main(void) {
   }
   printf("F = %.9g %.9g N, k_yy = %.9g N/m, cage at %.9g rad\n", out.force_n[0], out.force_n[1],
          out.stiffness[1][1], out.cage_angle_rad);
+
+  /* The friction of that step (a separate call, at the rate the friction is wanted). */
+  status = bearing_friction(bearing, state.shaft_speed_rad_s, &out);
+  if (status != BEARING_STATUS_OK) {
+    fprintf(stderr, "bearing_friction: %s\n", bearing_error_message(status));
+    return 1;
+  }
+  printf("friction torque %.9g N m, power loss %.9g W = %.9g rolling + %.9g viscous + %.9g boundary\n",
+         out.friction_torque_nm, out.power_loss_w, out.power_loss_split_w[0], out.power_loss_split_w[1],
+         out.power_loss_split_w[2]);
+  printf("first roller (at the cage angle): lambda %.9g inner, %.9g outer\n", out.rollers[0].lambda_in, out.rollers[0].lambda_out);
   return 0;
 }

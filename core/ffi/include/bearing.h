@@ -63,7 +63,8 @@ enum BearingStatus
   BEARING_STATUS_INVALID_STATE = 10,
   // The time step is not finite or outside 0 … 1 s.
   BEARING_STATUS_INVALID_TIME_STEP = 11,
-  // Another argument is out of its range (settle steps, cage angle); the refusal names it.
+  // Another argument is out of its range (settle steps, cage angle, the shaft speed of
+  // `bearing_friction`); the refusal names it.
   BEARING_STATUS_INVALID_ARGUMENT = 12,
 };
 #ifndef __cplusplus
@@ -256,6 +257,12 @@ typedef struct BearingRollerOutput {
   float contact_stiffness_n_per_m;
   // Film-coupled roller stiffness dQ_j/d(geometric approach) (N/m).
   float roller_stiffness_n_per_m;
+  // Film ratio λ = h/σ of the inner contact (central film over the composite roughness,
+  // docs/physics.md §8.1), filled by `bearing_friction` (0 until then and for the dry model;
+  // a step leaves the last call's value).
+  float lambda_in;
+  // Film ratio λ of the outer contact (as `lambda_in`).
+  float lambda_out;
   // Regime of the inner contact: 0 dry, 1 rigid iso-viscous, 2 elastic iso-viscous,
   // 3 rigid piezo-viscous, 4 elastic piezo-viscous.
   uint8_t regime_in;
@@ -283,6 +290,17 @@ typedef struct BearingOutput {
   float cage_angle_rad;
   // Number of rollers Z: the first Z entries of `rollers` are meaningful, the rest zero.
   uint32_t roller_count;
+  // Each roller's centrifugal force on the outer race F_c (N; 0 when the bearing leaves it
+  // out, docs/physics.md §4.1).
+  float centrifugal_force_n;
+  // Friction torque on the inner ring (N·m, docs/physics.md §8.4), filled by
+  // `bearing_friction` (0 until then and for the dry model; a step leaves the last call's
+  // value, so call `bearing_friction` after the step whose friction is wanted).
+  float friction_torque_nm;
+  // Power loss of the roller–race contacts (W), filled by `bearing_friction`.
+  float power_loss_w;
+  // The power loss split into [rolling, viscous, boundary] (W), filled by `bearing_friction`.
+  float power_loss_split_w[3];
   // Per-roller states.
   struct BearingRollerOutput rollers[BEARING_MAX_ROLLERS];
 } BearingOutput;
@@ -355,6 +373,22 @@ BearingStatus bearing_settle(struct BearingHandle *handle,
                              uint32_t steps,
                              struct BearingOutput *out);
 
+// The friction of the last computing call's output (the core's `Bearing::friction`,
+// docs/physics.md §8): fills every roller's film ratios `lambda_in`, `lambda_out` and the
+// bearing's `friction_torque_nm`, `power_loss_w` and `power_loss_split_w` at the shaft speed
+// `shaft_speed_rad_s` of that step (rad/s, |ω| ≤ 10⁵), and writes the whole output to `*out`.
+// The same work at every call (≈ 35 000 Cortex-M4 instructions for 17 rollers), kept out of
+// the step functions so that a real-time loop pays for it only at the rate it wants the
+// friction. The dry film model has none: its friction fields stay zero. On a refusal
+// (`BEARING_STATUS_INVALID_ARGUMENT`, the refusal names `shaft_speed_rad_s`) nothing is
+// changed and `*out` is left as it was.
+//
+// # Safety
+// As `bearing_advance`.
+BearingStatus bearing_friction(struct BearingHandle *handle,
+                               float shaft_speed_rad_s,
+                               struct BearingOutput *out);
+
 // The output of the last computing call (all zero before the first) and the committed cage
 // angle.
 //
@@ -375,12 +409,13 @@ BearingStatus bearing_set_cage_angle(struct BearingHandle *handle, float cage_an
 // As `bearing_advance`.
 BearingStatus bearing_reset(struct BearingHandle *handle);
 
-// Describes the last input a step function or `bearing_set_cage_angle` refused on this
+// Describes the last input a step function, `bearing_friction` or `bearing_set_cage_angle` refused on this
 // bearing (`field` empty when none was).
 //
 // # Safety
 // As `bearing_advance`; `out` is NULL or writable.
-BearingStatus bearing_last_refusal(struct BearingHandle *handle, struct BearingRefusal *out);
+BearingStatus bearing_last_refusal(struct BearingHandle *handle,
+                                   struct BearingRefusal *out);
 
 #ifdef __cplusplus
 }  // extern "C"

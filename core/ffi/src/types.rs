@@ -38,7 +38,8 @@ pub enum BearingStatus {
     InvalidState = 10,
     /// The time step is not finite or outside 0 … 1 s.
     InvalidTimeStep = 11,
-    /// Another argument is out of its range (settle steps, cage angle); the refusal names it.
+    /// Another argument is out of its range (settle steps, cage angle, the shaft speed of
+    /// `bearing_friction`); the refusal names it.
     InvalidArgument = 12,
 }
 
@@ -194,6 +195,12 @@ pub struct BearingRollerOutput {
     pub contact_stiffness_n_per_m: f32,
     /// Film-coupled roller stiffness dQ_j/d(geometric approach) (N/m).
     pub roller_stiffness_n_per_m: f32,
+    /// Film ratio λ = h/σ of the inner contact (central film over the composite roughness,
+    /// docs/physics.md §8.1), filled by `bearing_friction` (0 until then and for the dry model;
+    /// a step leaves the last call's value).
+    pub lambda_in: f32,
+    /// Film ratio λ of the outer contact (as `lambda_in`).
+    pub lambda_out: f32,
     /// Regime of the inner contact: 0 dry, 1 rigid iso-viscous, 2 elastic iso-viscous,
     /// 3 rigid piezo-viscous, 4 elastic piezo-viscous.
     pub regime_in: u8,
@@ -223,6 +230,17 @@ pub struct BearingOutput {
     pub cage_angle_rad: f32,
     /// Number of rollers Z: the first Z entries of `rollers` are meaningful, the rest zero.
     pub roller_count: u32,
+    /// Each roller's centrifugal force on the outer race F_c (N; 0 when the bearing leaves it
+    /// out, docs/physics.md §4.1).
+    pub centrifugal_force_n: f32,
+    /// Friction torque on the inner ring (N·m, docs/physics.md §8.4), filled by
+    /// `bearing_friction` (0 until then and for the dry model; a step leaves the last call's
+    /// value, so call `bearing_friction` after the step whose friction is wanted).
+    pub friction_torque_nm: f32,
+    /// Power loss of the roller–race contacts (W), filled by `bearing_friction`.
+    pub power_loss_w: f32,
+    /// The power loss split into [rolling, viscous, boundary] (W), filled by `bearing_friction`.
+    pub power_loss_split_w: [f32; 3],
     /// Per-roller states.
     pub rollers: [BearingRollerOutput; BEARING_MAX_ROLLERS],
 }
@@ -271,7 +289,7 @@ pub struct BearingRefusal {
 }
 
 impl BearingRollerOutput {
-    fn of(roller: &RollerOutput) -> Self {
+    fn of(roller: &RollerOutput, [lambda_in, lambda_out]: [f32; 2]) -> Self {
         Self {
             angle_rad: roller.angle_rad,
             geometric_approach_m: roller.geometric_approach_m,
@@ -285,6 +303,8 @@ impl BearingRollerOutput {
             moment_nm: roller.moment_nm,
             contact_stiffness_n_per_m: roller.contact_stiffness_n_per_m,
             roller_stiffness_n_per_m: roller.roller_stiffness_n_per_m,
+            lambda_in,
+            lambda_out,
             regime_in: roller.regime_in as u8,
             regime_out: roller.regime_out as u8,
             film_source_in: roller.film_source_in as u8,
@@ -305,6 +325,8 @@ impl BearingRollerOutput {
         moment_nm: 0.0,
         contact_stiffness_n_per_m: 0.0,
         roller_stiffness_n_per_m: 0.0,
+        lambda_in: 0.0,
+        lambda_out: 0.0,
         regime_in: 0,
         regime_out: 0,
         film_source_in: 0,
@@ -315,7 +337,7 @@ impl BearingRollerOutput {
 impl BearingOutput {
     /// Writes a core output and the cage angle after it to `*out`, field by field in place (a
     /// whole `BearingOutput` built first and then copied cost the M4 ≈ 1000 instructions more
-    /// per step: zeroing and copying 988 bytes).
+    /// per step: zeroing and copying the whole struct, about a kilobyte).
     ///
     /// # Safety
     /// `out` is non-NULL, aligned and valid for writing a `BearingOutput`.
@@ -328,15 +350,19 @@ impl BearingOutput {
             addr_of_mut!((*out).stiffness).write(view.stiffness);
             addr_of_mut!((*out).damping_n_s_per_m).write(view.damping_n_s_per_m);
             addr_of_mut!((*out).cage_angle_rad).write(cage_angle_rad);
+            addr_of_mut!((*out).centrifugal_force_n).write(view.centrifugal_force_n);
+            addr_of_mut!((*out).friction_torque_nm).write(view.friction_torque_nm);
+            addr_of_mut!((*out).power_loss_w).write(view.power_loss_w);
+            addr_of_mut!((*out).power_loss_split_w).write(view.power_loss_split_w);
             // At most BEARING_MAX_ROLLERS (17): the storage holds no larger bearing.
             let count = view.rollers.len().min(BEARING_MAX_ROLLERS);
             addr_of_mut!((*out).roller_count).write(count as u32);
             let rollers = addr_of_mut!((*out).rollers).cast::<BearingRollerOutput>();
             for j in 0..BEARING_MAX_ROLLERS {
-                let roller = view
-                    .rollers
-                    .get(j)
-                    .map_or(BearingRollerOutput::ZERO, BearingRollerOutput::of);
+                let lambda = view.lambda.get(j).copied().unwrap_or([0.0; 2]);
+                let roller = view.rollers.get(j).map_or(BearingRollerOutput::ZERO, |r| {
+                    BearingRollerOutput::of(r, lambda)
+                });
                 // j < BEARING_MAX_ROLLERS: inside the array.
                 rollers.add(j).write(roller);
             }

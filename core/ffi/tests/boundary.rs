@@ -152,6 +152,12 @@ fn all_finite(out: &BearingOutput) -> bool {
     values.extend(out.force_n.iter().chain(&out.moment_nm));
     values.extend(out.stiffness.iter().flatten());
     values.extend(out.damping_n_s_per_m.iter().flatten());
+    values.extend([
+        out.centrifugal_force_n,
+        out.friction_torque_nm,
+        out.power_loss_w,
+    ]);
+    values.extend(out.power_loss_split_w);
     for r in &out.rollers[..out.roller_count as usize] {
         values.extend([
             r.load_n,
@@ -161,6 +167,8 @@ fn all_finite(out: &BearingOutput) -> bool {
             r.contact_stiffness_n_per_m,
             r.roller_stiffness_n_per_m,
             r.damping_force_n,
+            r.lambda_in,
+            r.lambda_out,
         ]);
     }
     values.iter().all(|v| v.is_finite())
@@ -197,6 +205,7 @@ enum Call {
     Evaluate(Arg, BearingState, f32, Arg),
     Settle(Arg, BearingState, u32, Arg),
     Output(Arg),
+    Friction(f32, Arg),
     SetCageAngle(f32),
     Reset,
     LastRefusal(Arg),
@@ -210,6 +219,7 @@ fn call() -> impl Strategy<Value = Call> {
         2 => (arg(), state(), dt(), arg()).prop_map(|(s, x, d, o)| Call::Evaluate(s, x, d, o)),
         1 => (arg(), state(), steps, arg()).prop_map(|(s, x, n, o)| Call::Settle(s, x, n, o)),
         1 => arg().prop_map(Call::Output),
+        2 => (state_value(2.0e3), arg()).prop_map(|(w, o)| Call::Friction(w, o)),
         1 => any_f32().prop_map(Call::SetCageAngle),
         1 => Just(Call::Reset),
         1 => arg().prop_map(Call::LastRefusal),
@@ -289,6 +299,22 @@ fn check_call(handle: *mut BearingHandle, call: &Call) -> BearingStatus {
                 assert_eq!(status, pointer_status(&[o]).unwrap_or(BearingStatus::Ok));
                 status
             }
+            Call::Friction(speed, o) => {
+                let op: *mut BearingOutput = pointer(o, &mut out_place);
+                let status = bearing_friction(handle, speed, op);
+                let allowed = speed.is_finite() && speed.abs() <= 1.0e5;
+                let expected = match pointer_status(&[o]) {
+                    Some(pointer) => pointer,
+                    None if allowed => BearingStatus::Ok,
+                    None => BearingStatus::InvalidArgument,
+                };
+                assert_eq!(status, expected, "{call:?}");
+                if status == BearingStatus::Ok {
+                    // Ok means the library wrote a whole output at the valid pointer.
+                    assert!(all_finite(&*op), "{call:?}");
+                }
+                status
+            }
             Call::SetCageAngle(angle) => {
                 let status = bearing_set_cage_angle(handle, angle);
                 let allowed = angle.is_finite() && angle.abs() <= 1.0e4;
@@ -311,7 +337,7 @@ fn check_call(handle: *mut BearingHandle, call: &Call) -> BearingStatus {
     };
     let computing = matches!(
         call,
-        Call::Advance(..) | Call::Evaluate(..) | Call::Settle(..)
+        Call::Advance(..) | Call::Evaluate(..) | Call::Settle(..) | Call::Friction(..)
     );
     if computing && status != BearingStatus::Ok {
         assert_eq!(out_place, before_out, "a refused call wrote *out: {call:?}");
@@ -448,6 +474,7 @@ fn handles_not_built_by_init_are_refused() {
                 expected
             );
             assert_eq!(bearing_output(handle, out.as_mut_ptr()), expected);
+            assert_eq!(bearing_friction(handle, 1000.0, out.as_mut_ptr()), expected);
             assert_eq!(bearing_set_cage_angle(handle, 0.0), expected);
             assert_eq!(bearing_reset(handle), expected);
             assert_eq!(bearing_last_refusal(handle, refusal.as_mut_ptr()), expected);

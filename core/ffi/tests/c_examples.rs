@@ -19,7 +19,7 @@ use std::time::{Duration, Instant};
 const TARGET: &str = "thumbv7em-none-eabihf";
 /// The Rust firmware's instructions per step for the same trace and film model
 /// (`hil-sim qemu --json`, docs/performance.md), for the report line.
-const RUST_FIRMWARE_INSTRUCTIONS: u32 = 28_046;
+const RUST_FIRMWARE_INSTRUCTIONS: u32 = 28_271;
 
 fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -59,7 +59,7 @@ fn run(command: &mut Command, install_hint: &str) -> std::process::Output {
 }
 
 /// The harness's kernel over the first `steps` samples of the trace: primed at the first,
-/// then one `step` per sample, as `hil-sim replay` and the firmware do.
+/// then one `step` and one `friction` per sample, as `hil-sim replay` and the firmware do.
 fn harness_outputs(steps: usize) -> Vec<StepOutputs> {
     let bytes = std::fs::read(trace_path()).unwrap();
     let header = Header::parse(bytes[..HEADER_LEN].try_into().unwrap()).unwrap();
@@ -87,14 +87,16 @@ fn harness_outputs(steps: usize) -> Vec<StepOutputs> {
         }
         let mut out = StepOutputs::default();
         kernel.step(&sample, &mut out).unwrap();
+        kernel.friction(&sample, &mut out).unwrap();
         result.push(out);
     }
     payload.verify(&header).unwrap();
     result
 }
 
-/// The records of an outputs file: per step the instruction count and the outputs.
-fn decode_outputs(bytes: &[u8]) -> (Vec<(u32, StepOutputs)>, Trailer) {
+/// The records of an outputs file: per step the instruction counts of the step and of the
+/// friction call, and the outputs.
+fn decode_outputs(bytes: &[u8]) -> (Vec<(outputs::StepCounts, StepOutputs)>, Trailer) {
     assert!(
         bytes.len() >= OUTPUT_HEADER_LEN + TRAILER_LEN,
         "outputs file too short"
@@ -109,7 +111,7 @@ fn decode_outputs(bytes: &[u8]) -> (Vec<(u32, StepOutputs)>, Trailer) {
         .chunks_exact(record_len)
         .map(|record| {
             let (counts, out) = outputs::decode_step(record, rollers).unwrap();
-            (counts.instructions, out)
+            (counts, out)
         })
         .collect();
     (steps, Trailer::decode(&bytes[body_end..]).unwrap())
@@ -118,7 +120,14 @@ fn decode_outputs(bytes: &[u8]) -> (Vec<(u32, StepOutputs)>, Trailer) {
 /// Every value of `c` has the bits of `rust`'s (−0 and 0 differ, NaN payloads count).
 fn assert_bit_identical(program: &str, step: usize, c: &StepOutputs, rust: &StepOutputs) {
     let bits = |o: &StepOutputs| {
-        let mut v = vec![o.force_n[0], o.force_n[1], o.cage_angle_rad];
+        let mut v = vec![
+            o.force_n[0],
+            o.force_n[1],
+            o.cage_angle_rad,
+            o.friction_torque_nm,
+            o.power_loss_w,
+        ];
+        v.extend(o.power_loss_split_w);
         for j in 0..o.rollers {
             v.extend([
                 o.roller_load_n[j],
@@ -144,7 +153,11 @@ fn assert_bit_identical(program: &str, step: usize, c: &StepOutputs, rust: &Step
 }
 
 /// Checks every step of an outputs file against the harness; returns the instruction counts.
-fn compare_with_harness(program: &str, outputs_file: &Path, steps: usize) -> Vec<u32> {
+fn compare_with_harness(
+    program: &str,
+    outputs_file: &Path,
+    steps: usize,
+) -> Vec<outputs::StepCounts> {
     let (records, trailer) = decode_outputs(&std::fs::read(outputs_file).unwrap());
     assert_eq!(trailer.status, 0, "{program}: trailer status");
     assert_eq!(records.len(), steps, "{program}: steps written");
@@ -152,7 +165,7 @@ fn compare_with_harness(program: &str, outputs_file: &Path, steps: usize) -> Vec
     for (step, ((_, c), rust)) in records.iter().zip(&rust).enumerate() {
         assert_bit_identical(program, step, c, rust);
     }
-    records.iter().map(|(count, _)| *count).collect()
+    records.iter().map(|(counts, _)| *counts).collect()
 }
 
 /// The static library of this build for the host (cargo puts the staticlib next to the rlib
@@ -189,7 +202,9 @@ fn host_c_example_replays_the_hub_trace_bit_identically() {
     );
     let counts = compare_with_harness("host C example", &outputs_file, 20_000);
     assert!(
-        counts.iter().all(|&c| c == 0),
+        counts
+            .iter()
+            .all(|c| c.instructions == 0 && c.friction_instructions == 0),
         "the host program counts nothing"
     );
 }
@@ -318,17 +333,26 @@ fn m4_c_example_replays_the_hub_trace_bit_identically_under_qemu() {
         trailer.calibration_instructions, 1000,
         "TIM2 does not count instructions (is -icount shift=0 in effect?)"
     );
-    let (fewest, most) = (counts.iter().min().unwrap(), counts.iter().max().unwrap());
+    let range = |values: Vec<u32>| (*values.iter().min().unwrap(), *values.iter().max().unwrap());
+    let (fewest, most) = range(counts.iter().map(|c| c.instructions).collect());
+    let (friction_fewest, friction_most) =
+        range(counts.iter().map(|c| c.friction_instructions).collect());
     println!(
         "M4 C program: {fewest}..{most} instructions per bearing_advance (Rust firmware's \
-         kernel step: {RUST_FIRMWARE_INSTRUCTIONS}), QEMU {:.1} s",
+         kernel step: {RUST_FIRMWARE_INSTRUCTIONS}), {friction_fewest}..{friction_most} per \
+         bearing_friction, QEMU {:.1} s",
         started.elapsed().as_secs_f64()
     );
     assert_eq!(fewest, most, "the step's instruction count varies");
+    assert_eq!(
+        friction_fewest, friction_most,
+        "the friction call's instruction count varies"
+    );
 }
 
 /// The minimal program of docs/c-api.md (which must show core/ffi/examples/minimal.c as it is)
-/// builds, runs, and prints the force, stiffness and cage angle the core computes in Rust.
+/// builds, runs, and prints the force, stiffness, cage angle and friction the core computes in
+/// Rust.
 #[test]
 fn minimal_program_of_the_docs_prints_the_cores_numbers() {
     use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
@@ -364,12 +388,21 @@ fn minimal_program_of_the_docs_prints_the_cores_numbers() {
     for _ in 0..10 {
         bearing.advance(&state, 1.0e-4).unwrap();
     }
-    let out = bearing.output();
+    let out = *bearing.output();
+    let cage_angle_rad = bearing.cage_angle_rad();
+    let friction = bearing.friction(state.shaft_speed_rad_s).unwrap();
     let expected = [
         out.force_n[0],
         out.force_n[1],
         out.stiffness[1][1],
-        bearing.cage_angle_rad(),
+        cage_angle_rad,
+        friction.friction_torque_nm,
+        friction.power_loss_w,
+        friction.power_loss_split_w[0],
+        friction.power_loss_split_w[1],
+        friction.power_loss_split_w[2],
+        friction.lambda[0][0],
+        friction.lambda[0][1],
     ];
     // Nine significant digits identify an f32 exactly.
     assert_eq!(

@@ -6,7 +6,8 @@
 //! `configs/<bearing>.toml`, docs/physics.md §6; a test checks they agree with the config files),
 //! keeps the core's [`Bearing`] (which carries the cage angle and the warm start from one
 //! sample to the next), turns each sample into an [`OperatingState`], advances the bearing by
-//! one nominal period and copies the result into [`StepOutputs`].
+//! one nominal period and copies the result into [`StepOutputs`]; [`Kernel::friction`] then
+//! adds the bearing's friction torque and power loss at that step.
 //!
 //! Determinism (docs/architecture.md, rules for the core): the cage advances by the nominal time
 //! step 1/rate of the trace (validated to within the gap tolerance), not by the difference of
@@ -16,6 +17,7 @@
 
 use super::outputs::{StepOutputs, MAX_ROLLERS};
 use super::wire::Sample;
+use bearing_core::bearing::STEEL_DENSITY_KG_M3;
 use bearing_core::film::corrections::FilmCorrections;
 pub use bearing_core::FilmKind;
 use bearing_core::{Bearing, BearingDesign, BearingParams, OperatingState};
@@ -48,12 +50,13 @@ pub enum KernelFault {
 }
 
 /// The design of a bearing identifier in a lubricant identifier: the core's preset of
-/// `configs/<bearing>.toml` (docs/physics.md §6). `thesis_oil` (η₀ = 0.08 Pa·s, α = 2.1·10⁻⁸ 1/Pa,
-/// ρ₀ = 833.8 kg/m³, the oil of both reference machines, §6.1, §6.2) is the presets' own;
+/// `configs/<bearing>.toml` (docs/physics.md §6); `hub_motor_hs` is the hub motor's.
+/// `thesis_oil` (η₀ = 0.08 Pa·s, α = 2.1·10⁻⁸ 1/Pa, ρ₀ = 833.8 kg/m³, the oil of both
+/// reference machines, §6.1, §6.2) is the presets' own;
 /// `thesis_oil_hs` is the same oil with the film corrections of [`film_corrections`].
 pub fn design(bearing_id: &str, lubricant_id: &str) -> Result<BearingDesign, KernelError> {
     let design = match bearing_id {
-        "hub_motor" => BearingDesign::HUB_MOTOR,
+        "hub_motor" | "hub_motor_hs" => BearingDesign::HUB_MOTOR,
         "nu205" => BearingDesign::NU205,
         _ => return Err(KernelError::UnknownBearing),
     };
@@ -86,12 +89,22 @@ pub fn film_corrections(lubricant_id: &str) -> Result<FilmCorrections, KernelErr
     })
 }
 
-/// The validated parameters of [`design`], with the [`film_corrections`] of the lubricant.
+/// The validated parameters of [`design`], with the [`film_corrections`] of the lubricant;
+/// `hub_motor_hs` adds the rollers' centrifugal force (docs/physics.md §4.1, steel rollers of
+/// [`STEEL_DENSITY_KG_M3`]), as `configs/hub_motor_high_speed.toml` does: the case whose step
+/// cost `hil-sim qemu` reports for the centrifugal force on.
 pub fn params(bearing_id: &str, lubricant_id: &str) -> Result<BearingParams, KernelError> {
-    Ok(design(bearing_id, lubricant_id)?
+    let params = design(bearing_id, lubricant_id)?
         .params()
         .map_err(KernelError::Parameter)?
-        .with_film_corrections(film_corrections(lubricant_id)?))
+        .with_film_corrections(film_corrections(lubricant_id)?);
+    if bearing_id == "hub_motor_hs" {
+        params
+            .with_centrifugal_force(STEEL_DENSITY_KG_M3)
+            .map_err(KernelError::Parameter)
+    } else {
+        Ok(params)
+    }
 }
 
 /// The core's bearing at the roller count of each known identifier.
@@ -130,7 +143,7 @@ impl Kernel {
         }
         let params = params(bearing_id, lubricant_id)?;
         let model = match bearing_id {
-            "hub_motor" => {
+            "hub_motor" | "hub_motor_hs" => {
                 Model::HubMotor(Bearing::new(params, film).map_err(KernelError::Parameter)?)
             }
             _ => Model::Nu205(Bearing::new(params, film).map_err(KernelError::Parameter)?),
@@ -199,6 +212,33 @@ impl Kernel {
             Model::Nu205(b) => copy_output(b, &state, dt_s, out),
         }
     }
+
+    /// The friction of the last step at `sample`'s shaft speed (the core's
+    /// `Bearing::friction`, docs/physics.md §8): writes the friction torque, power loss and its
+    /// split into `out`. A call of its own after [`Kernel::step`], so that the firmware counts
+    /// the step's instructions as before and the friction's apart; the same work every call.
+    #[inline(always)]
+    pub fn friction(&mut self, sample: &Sample, out: &mut StepOutputs) -> Result<(), KernelFault> {
+        match &mut self.model {
+            Model::HubMotor(b) => copy_friction(b, sample.speed_rad_s, out),
+            Model::Nu205(b) => copy_friction(b, sample.speed_rad_s, out),
+        }
+    }
+}
+
+/// Computes `bearing`'s friction at shaft speed ω (rad/s) and copies it into the record.
+fn copy_friction<const Z: usize>(
+    bearing: &mut Bearing<Z, SLICES>,
+    shaft_speed_rad_s: f32,
+    out: &mut StepOutputs,
+) -> Result<(), KernelFault> {
+    let result = bearing
+        .friction(shaft_speed_rad_s)
+        .map_err(KernelFault::Rejected)?;
+    out.friction_torque_nm = result.friction_torque_nm;
+    out.power_loss_w = result.power_loss_w;
+    out.power_loss_split_w = result.power_loss_split_w;
+    Ok(())
 }
 
 /// Advances `bearing` to `state` by `dt_s` and copies its output into the harness's

@@ -2,13 +2,13 @@
 //!
 //! [`StepOutputs`] holds fixed-size arrays so that stepping never allocates, on the host and on
 //! the Cortex-M4 alike. The firmware writes one record per step (the instruction count of the
-//! step, then the outputs) into a semihosting file; the host decodes it with the same code and
-//! compares it with its own replay of the trace:
+//! step and of its friction call, then the outputs) into a semihosting file; the host decodes it
+//! with the same code and compares it with its own replay of the trace:
 //!
 //! | part | layout |
 //! |---|---|
-//! | file header (16 bytes) | magic `BRGSTEPS`, version u16 = 1, rollers u16, count u32 |
-//! | step record | instructions u32 (TIM2), SysTick counts u32, F_x, F_y, θ_c (f32), then per roller Q, h_in, h_out, δ (f32) and the two film sources (u8) |
+//! | file header (16 bytes) | magic `BRGSTEPS`, version u16 = 2, rollers u16, count u32 |
+//! | step record | instructions of the step u32 (TIM2), SysTick counts of the step u32, instructions of the friction call u32, F_x, F_y, θ_c, M_f, P, P_rolling, P_viscous, P_boundary (f32), then per roller Q, h_in, h_out, δ (f32) and the two film sources (u8) |
 //! | trailer (28 bytes) | magic `BRGEND\0\0`, status u32 (0 = every step done), peak stack of the whole program u32, stack below the replay loop u32 (the step's own use), TIM2 and SysTick counts of a block of 1000 `nop` u32 ×2 (the calibration) |
 //!
 //! This file uses nothing from `std`: the firmware links this crate too.
@@ -19,6 +19,9 @@ pub use bearing_core::film::FilmSource;
 pub const MAX_ROLLERS: usize = 32;
 
 /// The bearing-step outputs. Only the first `rollers` entries of each array are meaningful.
+// `repr(C)`: the fields in this order keep every f32 the step writes within the 1020-byte
+// offset reach of the M4's `vstr`, whatever fields are added at the end.
+#[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepOutputs {
     /// Force of the rollers on the inner race, (F_x, F_y) (N), docs/physics.md §4.
@@ -40,6 +43,13 @@ pub struct StepOutputs {
     pub source_inner: [FilmSource; MAX_ROLLERS],
     /// Which model served the outer contact.
     pub source_outer: [FilmSource; MAX_ROLLERS],
+    /// Friction torque on the inner ring (N·m; docs/physics.md §8.4), from the core's
+    /// `Bearing::friction` after the step; 0 for the dry model.
+    pub friction_torque_nm: f32,
+    /// Power loss of the roller–race contacts (W), from the same call.
+    pub power_loss_w: f32,
+    /// The power loss split into [rolling, viscous, boundary] (W).
+    pub power_loss_split_w: [f32; 3],
 }
 
 impl Default for StepOutputs {
@@ -54,6 +64,9 @@ impl Default for StepOutputs {
             roller_approach_m: [0.0; MAX_ROLLERS],
             source_inner: [FilmSource::None; MAX_ROLLERS],
             source_outer: [FilmSource::None; MAX_ROLLERS],
+            friction_torque_nm: 0.0,
+            power_loss_w: 0.0,
+            power_loss_split_w: [0.0; 3],
         }
     }
 }
@@ -63,13 +76,13 @@ pub const OUTPUT_MAGIC: [u8; 8] = *b"BRGSTEPS";
 /// Magic of its trailer.
 pub const TRAILER_MAGIC: [u8; 8] = *b"BRGEND\0\0";
 /// Output format version.
-pub const OUTPUT_VERSION: u16 = 1;
+pub const OUTPUT_VERSION: u16 = 2;
 /// Output header size (bytes).
 pub const OUTPUT_HEADER_LEN: usize = 16;
 /// Trailer size (bytes).
 pub const TRAILER_LEN: usize = 28;
 /// Bytes of a step record before the per-roller part.
-const RECORD_FIXED: usize = 20;
+const RECORD_FIXED: usize = 44;
 /// Bytes per roller in a step record.
 const RECORD_PER_ROLLER: usize = 18;
 /// Largest step record (bytes).
@@ -141,8 +154,7 @@ impl Trailer {
 /// Writes one step record into `out`; returns its length. Rollers beyond [`MAX_ROLLERS`] are
 /// not representable and are clamped.
 pub fn encode_step(
-    instructions: u32,
-    systick: u32,
+    counts: &StepCounts,
     o: &StepOutputs,
     out: &mut [u8; OUTPUT_RECORD_MAX],
 ) -> usize {
@@ -151,12 +163,23 @@ pub fn encode_step(
     } else {
         o.rollers
     };
-    out[0..4].copy_from_slice(&instructions.to_le_bytes());
-    out[4..8].copy_from_slice(&systick.to_le_bytes());
-    out[8..12].copy_from_slice(&o.force_n[0].to_le_bytes());
-    out[12..16].copy_from_slice(&o.force_n[1].to_le_bytes());
-    out[16..20].copy_from_slice(&o.cage_angle_rad.to_le_bytes());
-    let mut at = RECORD_FIXED;
+    out[0..4].copy_from_slice(&counts.instructions.to_le_bytes());
+    out[4..8].copy_from_slice(&counts.systick.to_le_bytes());
+    out[8..12].copy_from_slice(&counts.friction_instructions.to_le_bytes());
+    let mut at = 12;
+    for value in [
+        o.force_n[0],
+        o.force_n[1],
+        o.cage_angle_rad,
+        o.friction_torque_nm,
+        o.power_loss_w,
+        o.power_loss_split_w[0],
+        o.power_loss_split_w[1],
+        o.power_loss_split_w[2],
+    ] {
+        out[at..at + 4].copy_from_slice(&value.to_le_bytes());
+        at += 4;
+    }
     for j in 0..rollers {
         for value in [
             o.roller_load_n[j],
@@ -199,6 +222,8 @@ pub struct StepCounts {
     pub instructions: u32,
     /// SysTick counts (168 MHz of virtual time).
     pub systick: u32,
+    /// Instructions of the friction call after the step (`Bearing::friction`), timed apart.
+    pub friction_instructions: u32,
 }
 
 /// Decodes one step record of `rollers` rollers. `None` when the bytes are too short, the
@@ -215,11 +240,15 @@ pub fn decode_step(bytes: &[u8], rollers: usize) -> Option<(StepCounts, StepOutp
     let counts = StepCounts {
         instructions: word(0)?,
         systick: word(4)?,
+        friction_instructions: word(8)?,
     };
     let mut o = StepOutputs {
-        force_n: [f32_at(bytes, 8)?, f32_at(bytes, 12)?],
-        cage_angle_rad: f32_at(bytes, 16)?,
+        force_n: [f32_at(bytes, 12)?, f32_at(bytes, 16)?],
+        cage_angle_rad: f32_at(bytes, 20)?,
         rollers,
+        friction_torque_nm: f32_at(bytes, 24)?,
+        power_loss_w: f32_at(bytes, 28)?,
+        power_loss_split_w: [f32_at(bytes, 32)?, f32_at(bytes, 36)?, f32_at(bytes, 40)?],
         ..StepOutputs::default()
     };
     let mut at = RECORD_FIXED;

@@ -73,6 +73,11 @@ pub fn run(args: &QemuArgs) -> Result<ExitCode> {
             "instructions per step  min {} / median {} / max {}",
             i.min, i.median, i.max
         );
+        let f = &report.friction_instructions_per_step;
+        println!(
+            "friction call          min {} / median {} / max {} instructions (after each step, counted apart)",
+            f.min, f.median, f.max
+        );
         println!(
             "calibration            1000 nop = {} instructions (TIM2), {} SysTick counts",
             report.calibration.instructions, report.calibration.systick

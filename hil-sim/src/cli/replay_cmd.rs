@@ -182,7 +182,7 @@ pub fn run(args: &ReplayArgs) -> Result<ExitCode> {
     // not stand without the plots it describes.
     let mut files = OutputFiles::new();
     report
-        .write(&mut files, &args.report)
+        .write(&mut files, &args.report, &trace, &run)
         .with_context(|| format!("writing the report into {}", args.report.display()))?;
     plots::write_all(&mut files, &args.report, &trace, &run, budget_us)
         .map_err(|e| anyhow!("writing the report into {}: {e}", args.report.display()))?;

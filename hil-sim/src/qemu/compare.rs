@@ -69,8 +69,8 @@ pub fn parse_outputs(bytes: &[u8], expected_steps: usize) -> Result<FirmwareRun,
     })
 }
 
-/// The host replay of the trace through the same kernel, primed at the first sample as the
-/// firmware does.
+/// The host replay of the trace through the same kernel, primed at the first sample and with
+/// the friction after every step, as the firmware does.
 pub fn host_outputs(trace: &Trace, film: FilmKind) -> Result<Vec<StepOutputs>, String> {
     let mut kernel = Kernel::new(
         &trace.meta.bearing,
@@ -91,6 +91,7 @@ pub fn host_outputs(trace: &Trace, film: FilmKind) -> Result<Vec<StepOutputs>, S
     for (index, (sample, out)) in trace.samples.iter().zip(outputs.iter_mut()).enumerate() {
         kernel
             .step(sample, out)
+            .and_then(|()| kernel.friction(sample, out))
             .map_err(|e| format!("host step {index} failed: {e:?}"))?;
     }
     Ok(outputs)
@@ -120,7 +121,24 @@ fn first_difference(host: &StepOutputs, firmware: &StepOutputs) -> Option<String
             host.cage_angle_rad,
             firmware.cage_angle_rad,
         ),
+        (
+            "friction_torque".into(),
+            host.friction_torque_nm,
+            firmware.friction_torque_nm,
+        ),
+        (
+            "power_loss".into(),
+            host.power_loss_w,
+            firmware.power_loss_w,
+        ),
     ];
+    for (k, part) in ["rolling", "viscous", "boundary"].iter().enumerate() {
+        fields.push((
+            format!("power_loss_{part}"),
+            host.power_loss_split_w[k],
+            firmware.power_loss_split_w[k],
+        ));
+    }
     for j in 0..host.rollers.min(crate::outputs::MAX_ROLLERS) {
         fields.push((
             format!("roller {j} load"),
@@ -197,6 +215,9 @@ mod tests {
             force_n: [seed, -2.0 * seed],
             cage_angle_rad: 0.25 * seed,
             rollers,
+            friction_torque_nm: 0.01 * seed,
+            power_loss_w: 20.0 * seed,
+            power_loss_split_w: [12.0 * seed, 5.0 * seed, 3.0 * seed],
             ..StepOutputs::default()
         };
         for j in 0..rollers {
@@ -215,7 +236,12 @@ mod tests {
         let mut bytes = encode_output_header(rollers as u16, steps.len() as u32).to_vec();
         let mut record = [0u8; OUTPUT_RECORD_MAX];
         for (i, s) in steps.iter().enumerate() {
-            let len = encode_step(1000 + i as u32, 168, s, &mut record);
+            let counts = StepCounts {
+                instructions: 1000 + i as u32,
+                systick: 168,
+                friction_instructions: 30_000 + i as u32,
+            };
+            let len = encode_step(&counts, s, &mut record);
             bytes.extend_from_slice(&record[..len]);
         }
         let trailer = Trailer {
@@ -236,6 +262,7 @@ mod tests {
         let run = parse_outputs(&bytes, 5).unwrap();
         assert_eq!(run.outputs, steps);
         assert_eq!(run.counts[3].instructions, 1003);
+        assert_eq!(run.counts[3].friction_instructions, 30_003);
         assert_eq!(run.trailer.stack_bytes, 4096);
         assert!(parse_outputs(&bytes, 6).is_err(), "wrong step count");
         assert!(
@@ -243,8 +270,8 @@ mod tests {
             "truncated"
         );
         let mut bad_source = bytes.clone();
-        // First roller's inner film source of the first record: header 16 + fixed 20 + 16.
-        bad_source[16 + 20 + 16] = 9;
+        // First roller's inner film source of the first record: header 16 + fixed 44 + 16.
+        bad_source[16 + 44 + 16] = 9;
         assert!(
             parse_outputs(&bad_source, 5).is_err(),
             "unknown film source"
@@ -263,5 +290,10 @@ mod tests {
         let first = c.first_mismatch.unwrap();
         assert!(first.starts_with("step 2: roller 7 outer film"), "{first}");
         assert_eq!(compare(&host, &firmware[..3]).mismatched_steps, 2);
+        let mut firmware = host.clone();
+        firmware[1].power_loss_split_w[2] =
+            f32::from_bits(firmware[1].power_loss_split_w[2].to_bits() ^ 1);
+        let first = compare(&host, &firmware).first_mismatch.unwrap();
+        assert!(first.starts_with("step 1: power_loss_boundary"), "{first}");
     }
 }

@@ -95,6 +95,9 @@ pub fn parse_profile(text: &str) -> Vec<ProfileEntry> {
 pub struct QemuReport {
     /// Instructions per step (TIM2 at 1 GHz of virtual time, `-icount shift=0`).
     pub instructions_per_step: CountRange,
+    /// Instructions of the friction call after each step (`Bearing::friction`), counted apart
+    /// from the step.
+    pub friction_instructions_per_step: CountRange,
     /// Flash used by the firmware image (bytes).
     pub flash_bytes: u64,
     /// Static RAM (data + bss) of the firmware image (bytes).
@@ -111,7 +114,7 @@ pub struct QemuReport {
     pub systick_per_step: CountRange,
     /// TIM2 and SysTick counts of 1000 `nop` (must be 1000 and 168–169).
     pub calibration: Calibration,
-    /// Same instruction count for every step.
+    /// Same instruction count for every step, and for every friction call.
     pub deterministic: bool,
     /// The limit on instructions per step.
     pub max_instructions_limit: u32,
@@ -289,6 +292,8 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
     let comparison = compare::compare(&host, &firmware.outputs);
     let instructions = CountRange::of(firmware.counts.iter().map(|c| c.instructions))
         .ok_or("the firmware reported no steps")?;
+    let friction = CountRange::of(firmware.counts.iter().map(|c| c.friction_instructions))
+        .ok_or("the firmware reported no steps")?;
     let systick = CountRange::of(firmware.counts.iter().map(|c| c.systick))
         .ok_or("the firmware reported no steps")?;
     let calibration = Calibration {
@@ -325,11 +330,17 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
             comparison.first_mismatch.as_deref().unwrap_or("?")
         ));
     }
-    let deterministic = instructions.min == instructions.max;
-    if !deterministic {
+    let deterministic = instructions.min == instructions.max && friction.min == friction.max;
+    if instructions.min != instructions.max {
         reasons.push(format!(
             "instruction count varies with the data: {} ..= {} per step (must be equal)",
             instructions.min, instructions.max
+        ));
+    }
+    if friction.min != friction.max {
+        reasons.push(format!(
+            "the friction call's instruction count varies with the data: {} ..= {} (must be equal)",
+            friction.min, friction.max
         ));
     }
     if instructions.max > options.max_instructions {
@@ -340,6 +351,7 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
     }
     let report = QemuReport {
         instructions_per_step: instructions,
+        friction_instructions_per_step: friction,
         flash_bytes: memory.flash_bytes,
         ram_bytes: memory.ram_bytes,
         stack_bytes: firmware.trailer.stack_bytes,
@@ -361,9 +373,12 @@ pub fn run(options: &QemuOptions) -> Result<QemuReport, String> {
         reasons,
     };
     // Per-step counts for plots or later analysis.
-    let mut csv = String::from("step,instructions,systick\n");
+    let mut csv = String::from("step,instructions,systick,friction_instructions\n");
     for (index, c) in firmware.counts.iter().enumerate() {
-        csv.push_str(&format!("{index},{},{}\n", c.instructions, c.systick));
+        csv.push_str(&format!(
+            "{index},{},{},{}\n",
+            c.instructions, c.systick, c.friction_instructions
+        ));
     }
     // Both written whole or not at all: a reader never finds a half-written report.
     let json = serde_json::to_string_pretty(&report).map_err(|e| format!("qemu.json: {e}"))?;

@@ -149,6 +149,8 @@ impl SourceCounts {
 pub struct ReplayRun {
     /// Time of every step (ns).
     pub step_times_ns: Vec<u64>,
+    /// Time of the friction call after every step (ns), measured apart from the step.
+    pub friction_times_ns: Vec<u64>,
     /// Outputs of every step.
     pub outputs: Vec<StepOutputs>,
     /// Deadline statistics when paced.
@@ -183,7 +185,7 @@ pub struct ReplayError {
     /// Sample index.
     pub index: usize,
     /// What failed: `"configuration"`, `"stepper"`, `"warm-up stepper"`, `"reference"`,
-    /// `"dry stepper"` or `"real-time scheduling"`.
+    /// `"stepper friction"`, `"dry stepper"` or `"real-time scheduling"`.
     pub stage: &'static str,
     /// Its reason.
     pub fault: StepFault,
@@ -253,6 +255,7 @@ pub fn replay(
     }
     let n = trace.samples.len();
     let mut step_times_ns = vec![0u64; n];
+    let mut friction_times_ns = vec![0u64; n];
     let mut outputs = vec![StepOutputs::default(); n];
     let mut pacing = config.paced.then(Pacing::default);
     // Real-time scheduling for the timed loop alone (dropped before the accuracy pass).
@@ -273,10 +276,11 @@ pub fn replay(
         None => None,
     };
     let start = Instant::now();
-    for (index, ((sample, time), out)) in trace
+    for (index, (((sample, time), friction_time), out)) in trace
         .samples
         .iter()
         .zip(step_times_ns.iter_mut())
+        .zip(friction_times_ns.iter_mut())
         .zip(outputs.iter_mut())
         .enumerate()
     {
@@ -286,6 +290,7 @@ pub fn replay(
         }
         let t1;
         (*time, t1) = timed_step(parts.stepper, sample, out, index, "stepper")?;
+        *friction_time = timed_friction(parts.stepper, sample, out, index)?;
         if let Some(p) = pacing.as_mut() {
             let deadline = release + Duration::from_secs_f64(1.0 / config.rate_hz);
             if t1 > deadline {
@@ -316,6 +321,7 @@ pub fn replay(
 
     let mut run = ReplayRun {
         step_times_ns,
+        friction_times_ns,
         outputs,
         pacing,
         points: Vec::new(),
@@ -351,6 +357,25 @@ fn timed_step(
         fault,
     })?;
     Ok((u64::try_from((t1 - t0).as_nanos()).unwrap_or(u64::MAX), t1))
+}
+
+/// The friction call of `stepper` after its step, bracketed by two clock reads: its time (ns).
+#[inline(always)]
+fn timed_friction(
+    stepper: &mut dyn BearingStepper,
+    sample: &Sample,
+    out: &mut StepOutputs,
+    index: usize,
+) -> Result<u64, ReplayError> {
+    let t0 = Instant::now();
+    let result = stepper.friction(black_box(sample), black_box(out));
+    let t1 = Instant::now();
+    result.map_err(|fault| ReplayError {
+        index,
+        stage: "stepper friction",
+        fault,
+    })?;
+    Ok(u64::try_from((t1 - t0).as_nanos()).unwrap_or(u64::MAX))
 }
 
 /// Steps `warm_up` over the first [`WARM_UP_STEPS`] samples and returns the first step's time

@@ -61,6 +61,12 @@ pub trait BearingStepper {
     /// Advances the model to `sample` and writes its outputs into `out` (every field the
     /// stepper knows, `out.rollers` included). This call is what the replay times.
     fn step(&mut self, sample: &Sample, out: &mut StepOutputs) -> Result<(), StepFault>;
+    /// Adds the friction of the step just taken to `out` (torque, power loss and its split),
+    /// at `sample`'s shaft speed; the replay times it apart from the step. A model without
+    /// friction leaves those fields as they are.
+    fn friction(&mut self, _sample: &Sample, _out: &mut StepOutputs) -> Result<(), StepFault> {
+        Ok(())
+    }
 }
 
 /// The accuracy reference at one sample (f64).

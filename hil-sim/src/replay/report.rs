@@ -4,7 +4,9 @@
 //! `budget_judged`,
 //! `accuracy_ok`, `film_rel_err_p99`, `film_rel_err_max`, `force_rel_err_p99`,
 //! `force_rel_err_max`, `force_rel_err_resultant_p99`, `dry_force_rel_err_p99`,
-//! `network_fraction`, plus `steps_over_budget` and context (trace, film model, limits, pacing,
+//! `network_fraction`, `friction` (`friction_torque_nm` and `power_loss_w` as `{min, mean,
+//! max}`, `power_loss_split_mean_w{rolling, viscous, boundary}`, `friction_time_ns`), plus
+//! `steps_over_budget` and context (trace, film model, limits, pacing,
 //! the real-time scheduling of the timed loop, the machine's pauses (`environment`), reasons,
 //! notes). Accuracy keys
 //! are `null` when no reference ran (`--reference-every 0` or no reference available):
@@ -12,10 +14,12 @@
 
 use super::engine::{Pacing, ReplayConfig, ReplayRun, SourceCounts};
 use super::pauses::PauseSummary;
-use super::stats::{accuracy_verdict, budget_verdict, percentile, Limits, StepTimeStats};
+use super::stats::{
+    accuracy_verdict, budget_verdict, percentile, FrictionSummary, Limits, StepTimeStats,
+};
 use super::FilmKind;
 use crate::realtime::Realtime;
-use crate::trace::TraceMeta;
+use crate::trace::{Trace, TraceMeta};
 use bearing_host_common::output::OutputFiles;
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -57,6 +61,10 @@ pub struct ReplayReport {
     pub network_fraction: Option<f64>,
     /// Contacts per film source over all steps.
     pub film_sources: SourceCounts,
+    /// The bearing's friction after every step (the core's `Bearing::friction`): torque and
+    /// power loss over the steps, the mean split, and the call's host time. Zeros for the dry
+    /// model, which has no film and no friction.
+    pub friction: Option<FrictionSummary>,
     /// Bearing identifier of the trace.
     pub bearing: String,
     /// Lubricant identifier of the trace.
@@ -190,6 +198,7 @@ impl ReplayReport {
             dry_force_rel_err_p99: percentile(&run.dry_force_errors, 0.99),
             network_fraction: run.sources.network_fraction(),
             film_sources: run.sources,
+            friction: FrictionSummary::of(&run.outputs, &run.friction_times_ns),
             bearing: meta.bearing.clone(),
             lubricant: meta.lubricant.clone(),
             film,
@@ -362,6 +371,31 @@ impl ReplayReport {
             s.none,
             self.network_fraction.map_or("n/a".into(), |f| format!("{:.4}", f))
         );
+        if let Some(f) = &self.friction {
+            let _ = writeln!(md, "## Friction after every step\n");
+            let _ = writeln!(md, "| quantity | min | mean | max |");
+            let _ = writeln!(md, "|---|---:|---:|---:|");
+            for (name, r) in [
+                ("friction torque (N·m)", &f.friction_torque_nm),
+                ("power loss (W)", &f.power_loss_w),
+            ] {
+                let _ = writeln!(
+                    md,
+                    "| {name} | {:.4} | {:.4} | {:.4} |",
+                    r.min, r.mean, r.max
+                );
+            }
+            let s = &f.power_loss_split_mean_w;
+            let _ = writeln!(
+                md,
+                "\nMean power loss by mechanism: rolling {:.3} W, viscous {:.3} W, boundary {:.3} W. The friction call (`Bearing::friction`, timed apart from the step): median {}, p99 {}. Per step in `friction.csv`.\n",
+                s.rolling,
+                s.viscous,
+                s.boundary,
+                us(f.friction_time_ns.median),
+                us(f.friction_time_ns.p99)
+            );
+        }
         if self.reasons.is_empty() {
             let _ = writeln!(md, "Verdict: **pass**.");
             for note in &self.notes {
@@ -376,14 +410,47 @@ impl ReplayReport {
         md
     }
 
-    /// Writes `report.json` and `report.md` into `files`, staged for `dir` (created if
-    /// missing); they appear there when `files` is committed.
-    pub fn write(&self, files: &mut OutputFiles, dir: &Path) -> std::io::Result<()> {
+    /// Writes `report.json`, `report.md` and `friction.csv` (every step's friction, from
+    /// `run`) into `files`, staged for `dir` (created if missing); they appear there when
+    /// `files` is committed.
+    pub fn write(
+        &self,
+        files: &mut OutputFiles,
+        dir: &Path,
+        trace: &Trace,
+        run: &ReplayRun,
+    ) -> std::io::Result<()> {
         std::fs::create_dir_all(dir)?;
+        std::fs::write(
+            files.stage(&dir.join("friction.csv"))?,
+            friction_csv(trace, run),
+        )?;
         let json = serde_json::to_string_pretty(self).map_err(std::io::Error::other)?;
         std::fs::write(files.stage(&dir.join("report.json"))?, json)?;
         let mut md = self.markdown();
         md.push_str("\n![step time](step_time_histogram.png)\n\n![error along the trace](error_along_trace.png)\n\n![film per roller](film_per_roller.png)\n");
         std::fs::write(files.stage(&dir.join("report.md"))?, md)
     }
+}
+
+/// Every step's friction: time and shaft speed of the sample, torque, power loss and its split.
+pub fn friction_csv(trace: &Trace, run: &ReplayRun) -> String {
+    let mut csv = String::from(
+        "step,time_s,shaft_speed_rad_s,friction_torque_nm,power_loss_w,power_loss_rolling_w,power_loss_viscous_w,power_loss_boundary_w\n",
+    );
+    for (index, (sample, o)) in trace.samples.iter().zip(&run.outputs).enumerate() {
+        let [rolling, viscous, boundary] = o.power_loss_split_w;
+        let _ = writeln!(
+            csv,
+            "{index},{},{},{:e},{:e},{:e},{:e},{:e}",
+            sample.time_s,
+            sample.speed_rad_s,
+            o.friction_torque_nm,
+            o.power_loss_w,
+            rolling,
+            viscous,
+            boundary
+        );
+    }
+    csv
 }

@@ -127,3 +127,76 @@ pub fn accuracy_verdict(
         Err(reasons)
     }
 }
+
+/// Smallest, mean and largest of a quantity over the steps.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Range {
+    /// Smallest value.
+    pub min: f64,
+    /// Arithmetic mean.
+    pub mean: f64,
+    /// Largest value.
+    pub max: f64,
+}
+
+impl Range {
+    /// The range of `values`; `None` when empty.
+    pub fn of(values: impl Iterator<Item = f64>) -> Option<Range> {
+        let (mut min, mut max, mut sum, mut n) = (f64::INFINITY, f64::NEG_INFINITY, 0.0, 0usize);
+        for v in values {
+            min = min.min(v);
+            max = max.max(v);
+            sum += v;
+            n += 1;
+        }
+        (n > 0).then(|| Range {
+            min,
+            mean: sum / n as f64,
+            max,
+        })
+    }
+}
+
+/// The mean power loss of every step split by mechanism (W; docs/physics.md §8.4).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct PowerLossSplit {
+    /// Rolling (hydrodynamic) resistance of the films' inlets.
+    pub rolling: f64,
+    /// Viscous (Eyring) shear of the films.
+    pub viscous: f64,
+    /// Boundary friction of the asperities.
+    pub boundary: f64,
+}
+
+/// The friction the core computed after every step (`Bearing::friction`), and what that call
+/// cost on the host.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct FrictionSummary {
+    /// Friction torque on the inner ring over the steps (N·m).
+    pub friction_torque_nm: Range,
+    /// Power loss over the steps (W).
+    pub power_loss_w: Range,
+    /// Mean power loss by mechanism (W).
+    pub power_loss_split_mean_w: PowerLossSplit,
+    /// Time of the friction call after each step (ns), measured apart from the step.
+    pub friction_time_ns: StepTimeStats,
+}
+
+impl FrictionSummary {
+    /// The summary of every step's outputs and friction times; `None` without steps.
+    pub fn of(outputs: &[crate::outputs::StepOutputs], times_ns: &[u64]) -> Option<Self> {
+        let mean_of = |k: usize| {
+            Range::of(outputs.iter().map(|o| f64::from(o.power_loss_split_w[k]))).map(|r| r.mean)
+        };
+        Some(FrictionSummary {
+            friction_torque_nm: Range::of(outputs.iter().map(|o| f64::from(o.friction_torque_nm)))?,
+            power_loss_w: Range::of(outputs.iter().map(|o| f64::from(o.power_loss_w)))?,
+            power_loss_split_mean_w: PowerLossSplit {
+                rolling: mean_of(0)?,
+                viscous: mean_of(1)?,
+                boundary: mean_of(2)?,
+            },
+            friction_time_ns: StepTimeStats::of(times_ns)?,
+        })
+    }
+}

@@ -51,9 +51,27 @@ impl ClosedFormStepper {
     }
 }
 
+/// Friction torque of the lubricated double (N·m), the same at every speed; its power loss
+/// M·|ω| is split 1/2 rolling, 3/10 viscous, 1/5 boundary.
+const FRICTION_TORQUE_NM: f32 = 2.0e-3;
+
 impl BearingStepper for ClosedFormStepper {
     fn name(&self) -> String {
         "test double".into()
+    }
+
+    fn friction(
+        &mut self,
+        s: &crate::trace::Sample,
+        out: &mut StepOutputs,
+    ) -> Result<(), StepFault> {
+        if self.lubricated {
+            let power = FRICTION_TORQUE_NM * s.speed_rad_s.abs();
+            out.friction_torque_nm = FRICTION_TORQUE_NM;
+            out.power_loss_w = power;
+            out.power_loss_split_w = [0.5 * power, 0.3 * power, 0.2 * power];
+        }
+        Ok(())
     }
 
     fn step(&mut self, s: &crate::trace::Sample, out: &mut StepOutputs) -> Result<(), StepFault> {
@@ -298,9 +316,29 @@ fn exact_reference_passes_and_the_dry_model_is_worse() {
         "force_rel_err_p99",
         "dry_force_rel_err_p99",
         "network_fraction",
+        "friction",
     ] {
         assert!(json.get(key).is_some(), "missing {key}");
     }
+    // The friction of every step reaches the report: M·|ω| over the trace's speeds.
+    let friction = report.friction.unwrap();
+    let power = |s: &crate::trace::Sample| f64::from(FRICTION_TORQUE_NM * s.speed_rad_s.abs());
+    let (low, high) = trace
+        .samples
+        .iter()
+        .map(power)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+            (l.min(p), h.max(p))
+        });
+    assert_eq!(friction.power_loss_w.min, low);
+    assert_eq!(friction.power_loss_w.max, high);
+    assert_eq!(
+        friction.friction_torque_nm.mean,
+        f64::from(FRICTION_TORQUE_NM)
+    );
+    let split = friction.power_loss_split_mean_w;
+    assert!((split.rolling / friction.power_loss_w.mean - 0.5).abs() < 1e-6);
+    assert!((split.boundary / friction.power_loss_w.mean - 0.2).abs() < 1e-6);
     for key in ["min", "median", "p99", "p999", "max"] {
         assert!(
             json["step_time_ns"].get(key).is_some(),
@@ -316,19 +354,22 @@ fn exact_reference_passes_and_the_dry_model_is_worse() {
         files.commit().unwrap();
     }
     let mut files = OutputFiles::new();
-    report.write(&mut files, dir.path()).unwrap();
+    report.write(&mut files, dir.path(), &trace, &run).unwrap();
     let written =
         plots::write_all(&mut files, dir.path(), &trace, &run, cfg.limits.budget_us).unwrap();
     files.commit().unwrap();
     assert_eq!(written.len(), 3);
-    for name in written
-        .iter()
-        .map(String::as_str)
-        .chain(["report.json", "report.md"])
+    for name in
+        written
+            .iter()
+            .map(String::as_str)
+            .chain(["report.json", "report.md", "friction.csv"])
     {
         let len = std::fs::metadata(dir.path().join(name)).unwrap().len();
         assert!(len > 500, "{name} is {len} bytes");
     }
+    let csv = std::fs::read_to_string(dir.path().join("friction.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 501, "header and one line per step");
 }
 
 #[test]

@@ -212,9 +212,11 @@ impl Instance {
             .set_cage_angle(cage_angle_rad)
             .map_err(|e| e.to_string())?;
         let state = operating_state(&self.inputs());
-        bearing
-            .settle(&state, SETTLE_STEPS)
-            .map_err(|e| format!("inputs at t = {} s: {e}", self.time_s))?;
+        let settled = match bearing.settle(&state, SETTLE_STEPS) {
+            Ok(_) => bearing.friction(state.shaft_speed_rad_s).map(|_| ()),
+            Err(e) => Err(e),
+        };
+        settled.map_err(|e| format!("inputs at t = {} s: {e}", self.time_s))?;
         self.store_outputs(bearing.as_ref());
         self.bearing = Some(bearing);
         self.retune = false;
@@ -264,6 +266,12 @@ impl Instance {
             if let Err(e) = bearing.advance(&state, dt_s) {
                 result = Err(format!("at t = {current_time_s} s: {e}"));
                 break;
+            }
+        }
+        // The friction of the step's end state (docs/physics.md §8), at the input speed.
+        if result.is_ok() {
+            if let Err(e) = bearing.friction(state.shaft_speed_rad_s) {
+                result = Err(format!("at t = {current_time_s} s: {e}"));
             }
         }
         if result.is_ok() {
@@ -339,6 +347,8 @@ mod tests {
         for _ in 0..3 {
             bearing.advance(&state, (2.5_f64 / 3.0) as f32).unwrap();
         }
+        bearing.friction(900.0).unwrap();
+        assert!(bearing.output().power_loss_w > 0.0);
         let expected = output_values(&bearing.output(), bearing.cage_angle_rad());
         let got: Vec<f64> = (FIRST_OUTPUT..FIRST_PARAMETER)
             .map(|vr| fmu.real(vr as u32).unwrap())
@@ -355,7 +365,8 @@ mod tests {
         fmu.enter_initialization().unwrap();
         fmu.exit_initialization().unwrap();
         fmu.do_step(0.0, 1.0e-3).unwrap();
-        let angle = fmu.real(FIRST_PARAMETER as u32 - 1).unwrap() as f32;
+        let cage_angle = REALS.iter().position(|v| v.name == "cage_angle_rad");
+        let angle = fmu.real(cage_angle.unwrap() as u32).unwrap() as f32;
         let viscosity = FIRST_PARAMETER as u32 + 7;
         fmu.set_real(viscosity, 0.02).unwrap();
         fmu.do_step(1.0e-3, 1.0e-3).unwrap();
@@ -369,6 +380,7 @@ mod tests {
         let state = OperatingState::new([0.0, -4.0e-6], [0.0; 2], [0.0; 2], 900.0).unwrap();
         bearing.settle(&state, SETTLE_STEPS).unwrap();
         bearing.advance(&state, 1.0e-3).unwrap();
+        bearing.friction(900.0).unwrap();
         let expected = output_values(&bearing.output(), bearing.cage_angle_rad());
         let got: Vec<f64> = (FIRST_OUTPUT..FIRST_PARAMETER)
             .map(|vr| fmu.real(vr as u32).unwrap())

@@ -1,7 +1,7 @@
 //! The FMU's variables: one table that modelDescription.xml is written from and that the shared
 //! library reads and writes by value reference, so the two cannot disagree.
 //!
-//! Real value references: inputs 0–6, outputs 7–35, parameters 36–46 (the order of
+//! Real value references: inputs 0–6, outputs 7–40, parameters 41–51 (the order of
 //! [`REALS`]). Integer value references: [`INTEGERS`]. The generalised coordinates of the inner
 //! race are (x, y, tilt about x, tilt about y), as in the core's output
 //! (`bearing_core::BearingOutput`).
@@ -84,7 +84,7 @@ const fn parameter(
 /// Number of Real inputs.
 pub const INPUTS: usize = 7;
 /// Number of Real outputs.
-pub const OUTPUTS: usize = 29;
+pub const OUTPUTS: usize = 34;
 /// Number of Real parameters.
 pub const PARAMETERS: usize = 11;
 /// Value reference of the first output.
@@ -193,6 +193,32 @@ pub const REALS: [RealVariable; INPUTS + OUTPUTS + PARAMETERS] = [
         "rad",
         "Cage angle; roller j sits at it + 2 pi j / Z",
     ),
+    output(
+        "friction_torque_nm",
+        "N.m",
+        "Friction torque on the inner ring of the roller-race contacts (mixed EHL: rolling, \
+         viscous and boundary parts), computed after each step (0 for the dry model)",
+    ),
+    output(
+        "power_loss_w",
+        "W",
+        "Power loss of the roller-race contacts, friction torque times shaft speed",
+    ),
+    output(
+        "power_loss_rolling_w",
+        "W",
+        "Part of the power loss from the rolling (hydrodynamic inlet) resistance of the films",
+    ),
+    output(
+        "power_loss_viscous_w",
+        "W",
+        "Part of the power loss from the viscous (Eyring) shear of the films",
+    ),
+    output(
+        "power_loss_boundary_w",
+        "W",
+        "Part of the power loss from the boundary friction of the asperities",
+    ),
     parameter("pitch_diameter_m", Fixed, "m", "Pitch diameter d_m"),
     parameter("roller_diameter_m", Fixed, "m", "Roller diameter D"),
     parameter(
@@ -289,7 +315,7 @@ pub const INTEGERS: [IntegerVariable; 3] = [
 ];
 
 /// Units: name and SI base-unit exponents (kg, m, s, rad) of each unit [`REALS`] uses.
-pub const UNITS: [(&str, [i8; 4]); 16] = [
+pub const UNITS: [(&str, [i8; 4]); 17] = [
     ("m", [0, 1, 0, 0]),
     ("m/s", [0, 1, -1, 0]),
     ("rad", [0, 0, 0, 1]),
@@ -306,6 +332,7 @@ pub const UNITS: [(&str, [i8; 4]); 16] = [
     ("1/Pa", [-1, 1, 2, 0]),
     ("kg/m3", [1, -3, 0, 0]),
     ("s", [0, 0, 1, 0]),
+    ("W", [1, 2, -3, 0]),
 ];
 
 /// The film model's code in the `film_model` Integer parameter.
@@ -412,7 +439,8 @@ pub fn operating_state(inputs: &[f64; INPUTS]) -> OperatingState {
 }
 
 /// The outputs of a step (f32 widened exactly to f64), in [`REALS`] order from
-/// [`FIRST_OUTPUT`]; `cage_angle_rad` is the bearing's after the step.
+/// [`FIRST_OUTPUT`]; `cage_angle_rad` is the bearing's after the step, and the friction
+/// fields are those of the bearing's last `friction` call (the FMU makes it after every step).
 pub fn output_values(out: &OutputView<'_>, cage_angle_rad: f32) -> [f64; OUTPUTS] {
     let mut values = [0.0_f32; OUTPUTS];
     let mut k = 0;
@@ -458,6 +486,9 @@ pub fn output_values(out: &OutputView<'_>, cage_angle_rad: f32) -> [f64; OUTPUTS
         network as f32 / contacts as f32
     });
     push(cage_angle_rad);
+    push(out.friction_torque_nm);
+    push(out.power_loss_w);
+    out.power_loss_split_w.into_iter().for_each(&mut push);
     values.map(f64::from)
 }
 

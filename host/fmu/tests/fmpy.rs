@@ -1,7 +1,9 @@
 //! The FMU in a real importer: FMPy (PyPI) validates it and simulates it driven by a whirl and by
 //! the bundled hub-motor trace's kinematics (`tests/fmpy_run.py`); every output at every
 //! communication point equals, bit for bit, the core's output stepped here through its Rust API
-//! with the same inputs (settled at the first row, then one `advance` per communication step).
+//! with the same inputs (settled at the first row, then one `advance` per communication step,
+//! each followed by `friction` at the row's shaft speed: the friction torque, power loss and
+//! its split are outputs too).
 //!
 //! Needs `python3` with FMPy (`pip install fmpy`; `.ci/run` installs it): the test fails, naming
 //! it, when it is missing.
@@ -82,15 +84,15 @@ fn write_inputs(path: &Path, rows: &Rows) {
 fn reference(film: FilmKind, rows: &Rows) -> Vec<Vec<f64>> {
     let params = bearing_core::BearingDesign::HUB_MOTOR.params().unwrap();
     let mut bearing = boxed(params, film).unwrap();
-    bearing
-        .settle(&operating_state(&rows[0].1), SETTLE_STEPS)
-        .unwrap();
+    let first = operating_state(&rows[0].1);
+    bearing.settle(&first, SETTLE_STEPS).unwrap();
+    bearing.friction(first.shaft_speed_rad_s).unwrap();
     let mut out = vec![output_values(&bearing.output(), bearing.cage_angle_rad()).to_vec()];
     for pair in rows.windows(2) {
         let step = pair[1].0 - pair[0].0;
-        bearing
-            .advance(&operating_state(&pair[0].1), step as f32)
-            .unwrap();
+        let state = operating_state(&pair[0].1);
+        bearing.advance(&state, step as f32).unwrap();
+        bearing.friction(state.shaft_speed_rad_s).unwrap();
         out.push(output_values(&bearing.output(), bearing.cage_angle_rad()).to_vec());
     }
     out
@@ -176,6 +178,31 @@ fn fmpy_validates_and_simulates_the_fmu_bit_for_bit() {
             .map(|r| r[1 + max_load.unwrap()])
             .fold(0.0, f64::max);
         assert!(peak > 100.0, "{name}: peak roller load {peak} N");
+        // The friction outputs are the bearing's: power loss = torque × shaft speed of the
+        // step, and the sum of its split, to f32 rounding; positive wherever the shaft turns.
+        let column = |n: &str| 1 + output_names.iter().position(|o| *o == n).unwrap();
+        let [torque, power, speed] = ["friction_torque_nm", "power_loss_w", "shaft_speed_rad_s"];
+        let (torque, power) = (column(torque), column(power));
+        let split =
+            ["rolling", "viscous", "boundary"].map(|p| column(&format!("power_loss_{p}_w")));
+        let speed = REALS.iter().position(|v| v.name == speed).unwrap();
+        for (k, g) in got.iter().enumerate() {
+            // Row k's outputs end the step driven by row k − 1's inputs (row 0: settled there).
+            let omega = rows[k.saturating_sub(1)].1[speed].abs();
+            if omega < 1.0 {
+                continue;
+            }
+            assert!(g[power] > 0.0, "{name}: no power loss at row {k}");
+            assert!(
+                (g[power] / (g[torque] * omega) - 1.0).abs() < 1e-5,
+                "{name}: row {k}"
+            );
+            let sum: f64 = split.iter().map(|&c| g[c]).sum();
+            assert!(
+                (sum / g[power] - 1.0).abs() < 1e-5,
+                "{name}: split at row {k}"
+            );
+        }
     }
     assert!(trace_h > 0.0);
 }

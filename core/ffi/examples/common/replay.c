@@ -2,8 +2,9 @@
  * The replay loop shared by the host and the Cortex-M4 example: trace in, bearing steps,
  * harness records out. Step by step it does what the harness's kernel does
  * (hil-sim/kernel/src/kernel.rs): settle 6 steps at the first sample, then advance every sample
- * by the nominal period 1/rate (0 for the first), and record force, cage angle and each
- * roller's load, films, geometric approach and film sources.
+ * by the nominal period 1/rate (0 for the first), compute the friction of that step, and record
+ * force, cage angle, friction torque, power loss and its split, and each roller's load, films,
+ * geometric approach and film sources.
  */
 #include "replay.h"
 
@@ -119,9 +120,9 @@ int replay(FILE *trace, FILE *outputs, uint32_t max_steps, uint32_t film, replay
   }
 
   uint32_t steps = (max_steps != 0 && max_steps < count) ? max_steps : count;
-  /* The harness's output header: magic, version 1, rollers, step count. */
+  /* The harness's output header: magic, version 2, rollers, step count. */
   uint32_t rollers = config.roller_count;
-  if (fwrite("BRGSTEPS", 1, 8, outputs) != 8 || put_u16(outputs, 1) || put_u16(outputs, (uint16_t)rollers) ||
+  if (fwrite("BRGSTEPS", 1, 8, outputs) != 8 || put_u16(outputs, 2) || put_u16(outputs, (uint16_t)rollers) ||
       put_u32(outputs, steps)) {
     fprintf(stderr, "outputs: write failed\n");
     return 4;
@@ -130,7 +131,7 @@ int replay(FILE *trace, FILE *outputs, uint32_t max_steps, uint32_t film, replay
   /* The nominal period, rounded to f32 once, as the kernel does. */
   const float period_s = (float)(1.0 / rate_hz);
   static BearingOutput out; /* 1 KiB: static rather than on a small stack */
-  uint32_t fewest = UINT32_MAX, most = 0;
+  uint32_t fewest = UINT32_MAX, most = 0, friction_fewest = UINT32_MAX, friction_most = 0;
   for (uint32_t index = 0; index < steps; ++index) {
     uint8_t record[RECORD_LEN_MAX];
     if (fread(record, 1, record_len, trace) != record_len) {
@@ -159,11 +160,23 @@ int replay(FILE *trace, FILE *outputs, uint32_t max_steps, uint32_t film, replay
     if (status != BEARING_STATUS_OK) return refused("bearing_advance", status, bearing);
     if (counts < fewest) fewest = counts;
     if (counts > most) most = counts;
+    /* The friction of this step, at its shaft speed, counted apart from the step. */
+    start = counter ? counter() : 0;
+    status = bearing_friction(bearing, state.shaft_speed_rad_s, &out);
+    uint32_t friction_counts = counter ? counter() - start : 0;
+    if (status != BEARING_STATUS_OK) return refused("bearing_friction", status, bearing);
+    if (friction_counts < friction_fewest) friction_fewest = friction_counts;
+    if (friction_counts > friction_most) friction_most = friction_counts;
 
-    /* The record: counts (instructions, SysTick: not read here), F_x, F_y, cage angle, then
-       per roller Q, h_in, h_out, geometric approach and the two film sources. */
-    int bad = put_u32(outputs, counts) | put_u32(outputs, 0) | put_f32(outputs, out.force_n[0]) |
-              put_f32(outputs, out.force_n[1]) | put_f32(outputs, out.cage_angle_rad);
+    /* The record: counts (instructions of the step, SysTick: not read here, instructions of the
+       friction call), F_x, F_y, cage angle, friction torque, power loss and its split into
+       rolling, viscous and boundary, then per roller Q, h_in, h_out, geometric approach and
+       the two film sources. */
+    int bad = put_u32(outputs, counts) | put_u32(outputs, 0) | put_u32(outputs, friction_counts) |
+              put_f32(outputs, out.force_n[0]) | put_f32(outputs, out.force_n[1]) |
+              put_f32(outputs, out.cage_angle_rad) | put_f32(outputs, out.friction_torque_nm) |
+              put_f32(outputs, out.power_loss_w);
+    for (int k = 0; k < 3; ++k) bad |= put_f32(outputs, out.power_loss_split_w[k]);
     for (uint32_t j = 0; j < out.roller_count; ++j) {
       const BearingRollerOutput *r = &out.rollers[j];
       bad |= put_f32(outputs, r->load_n) | put_f32(outputs, r->central_film_in_m) |
@@ -186,5 +199,7 @@ int replay(FILE *trace, FILE *outputs, uint32_t max_steps, uint32_t film, replay
   summary->rollers = rollers;
   summary->fewest_counts = steps ? fewest : 0;
   summary->most_counts = most;
+  summary->friction_fewest_counts = steps ? friction_fewest : 0;
+  summary->friction_most_counts = friction_most;
   return 0;
 }

@@ -18,6 +18,8 @@ typedef struct ReplaySummary {
   uint32_t rollers;            /* rollers per step */
   uint32_t fewest_counts;      /* counter ticks of the cheapest step (0 without a counter) */
   uint32_t most_counts;        /* of the dearest */
+  uint32_t friction_fewest_counts; /* counter ticks of the cheapest bearing_friction call */
+  uint32_t friction_most_counts;   /* of the dearest */
 } ReplaySummary;
 
 /*

@@ -78,9 +78,11 @@ int main(void) {
      the file; a complete one ends with the trailer, which an interrupted one lacks. */
   if (code != 0) remove("outputs.bin");
   if (code == 0) {
-    printf("%u steps of %u rollers, %u..%u instructions per step (calibration %u), storage %u B aligned to %u\n",
+    printf("%u steps of %u rollers, %u..%u instructions per step and %u..%u per bearing_friction (calibration %u), "
+           "storage %u B aligned to %u\n",
            (unsigned)summary.steps, (unsigned)summary.rollers, (unsigned)summary.fewest_counts,
-           (unsigned)summary.most_counts, (unsigned)calibration, (unsigned)bearing_storage_size(),
+           (unsigned)summary.most_counts, (unsigned)summary.friction_fewest_counts,
+           (unsigned)summary.friction_most_counts, (unsigned)calibration, (unsigned)bearing_storage_size(),
            (unsigned)bearing_storage_align());
   }
   return code;

@@ -27,6 +27,16 @@ fn parameters_agree_with_the_config_files() {
         let (_, from_file) = bearing_host_common::config::BearingConfig::load(&path).unwrap();
         assert_eq!(params(id, "thesis_oil").unwrap(), from_file, "{id}");
     }
+    // The high-speed identifiers together: the hub motor's high-speed bearing file, with its
+    // centrifugal force and both film corrections.
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/hub_motor_high_speed.toml");
+    let (_, from_file) = bearing_host_common::config::BearingConfig::load(&path).unwrap();
+    assert_eq!(params("hub_motor_hs", "thesis_oil_hs").unwrap(), from_file);
+    assert_ne!(
+        params("hub_motor_hs", "thesis_oil").unwrap(),
+        params("hub_motor", "thesis_oil").unwrap()
+    );
 }
 
 #[test]
@@ -200,5 +210,61 @@ fn steps_the_networks_and_flags_their_contacts() {
     }
     for (a, b) in films[0].iter().zip(films[1].iter()) {
         assert!((a / b - 1.0).abs() < 0.02, "int {a} vs f32 {b}");
+    }
+}
+
+#[test]
+fn friction_is_the_cores_and_leaves_the_step_alone() {
+    // Along an orbit: a kernel that computes the friction after every step, one that does
+    // not, and the core's bearing stepped directly as the kernel does (settled at the first
+    // sample, then advanced by 0 and by the period). The friction must be the core's
+    // `Bearing::friction` bit for bit, and the step's outputs must not see it.
+    let rate = 1e4;
+    let samples: Vec<Sample> = (0..60)
+        .map(|i| {
+            let phase = i as f32 * 0.3;
+            sample(1.5e-6 * phase.cos(), -6.0e-6 + 1.5e-6 * phase.sin(), 1500.0)
+        })
+        .collect();
+    let mut with = Kernel::new("hub_motor", "thesis_oil", rate, FilmKind::Int).unwrap();
+    let mut without = with.clone();
+    let mut bearing: Bearing<17, SLICES> =
+        Bearing::new(params("hub_motor", "thesis_oil").unwrap(), FilmKind::Int).unwrap();
+    with.prime(&samples[0]);
+    without.prime(&samples[0]);
+    bearing
+        .settle(&Kernel::state(&samples[0]), PRIME_STEPS)
+        .unwrap();
+    let period_s = (1.0 / rate) as f32;
+    for (i, s) in samples.iter().enumerate() {
+        let (mut a, mut b) = (StepOutputs::default(), StepOutputs::default());
+        with.step(s, &mut a).unwrap();
+        with.friction(s, &mut a).unwrap();
+        without.step(s, &mut b).unwrap();
+        let dt_s = if i == 0 { 0.0 } else { period_s };
+        bearing.advance(&Kernel::state(s), dt_s).unwrap();
+        let core = bearing.friction(s.speed_rad_s).unwrap();
+        let friction = |o: &StepOutputs| {
+            [o.friction_torque_nm, o.power_loss_w]
+                .into_iter()
+                .chain(o.power_loss_split_w)
+                .map(f32::to_bits)
+                .collect::<Vec<_>>()
+        };
+        let expected: Vec<u32> = [core.friction_torque_nm, core.power_loss_w]
+            .into_iter()
+            .chain(core.power_loss_split_w)
+            .map(f32::to_bits)
+            .collect();
+        assert_eq!(friction(&a), expected, "step {i}");
+        assert!(a.power_loss_w > 0.0, "step {i}: no power loss");
+        // The step's fields alike; the record without friction keeps zeros there.
+        let step_part = StepOutputs {
+            friction_torque_nm: 0.0,
+            power_loss_w: 0.0,
+            power_loss_split_w: [0.0; 3],
+            ..a
+        };
+        assert_eq!(step_part, b, "step {i}");
     }
 }
