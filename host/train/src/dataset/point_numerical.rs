@@ -83,4 +83,45 @@ mod tests {
         // Unresolved at 129² (58 % grid error, docs/point_contact.md), more so at 65².
         assert!(solve(&heavy, &options).is_err());
     }
+
+    /// Solve a 40-case plan over the default point domain at 129² in parallel and print the wall
+    /// time, the cases per minute and every refusal; every case of the domain should be
+    /// accepted (the domain is chosen where the 129² solve resolves the film). Measurement, run
+    /// with `cargo test --release -p bearing-train point_domain_sample -- --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn point_domain_sample() {
+        use rayon::prelude::*;
+        let domain = crate::dataset::point_domain::PointDomain::default();
+        let plan = crate::dataset::generate::plan(40, 1, &domain);
+        let start = std::time::Instant::now();
+        let options = PointSolverOptions::default();
+        let results: Vec<_> = plan
+            .cases
+            .par_iter()
+            .map(|c| (c, solve(c, &options)))
+            .collect();
+        let wall = start.elapsed().as_secs_f64();
+        let mut refused = 0;
+        let mut worst = (0.0_f64, 0.0_f64);
+        for (c, r) in &results {
+            match r {
+                Ok(f) => {
+                    worst.0 = worst.0.max(f.central_grid_error);
+                    worst.1 = worst.1.max(f.minimum_grid_error);
+                }
+                Err(e) => {
+                    refused += 1;
+                    println!("M = {:.0}, L = {:.1}: {e}", c.moes_m(), c.moes_l());
+                }
+            }
+        }
+        println!(
+            "40 cases in {wall:.1} s wall ({:.1} cases/min), {refused} refused, largest raw grid error h_c {:.1} %, h_min {:.1} %",
+            40.0 * 60.0 / wall,
+            100.0 * worst.0,
+            100.0 * worst.1
+        );
+        assert_eq!(refused, 0);
+    }
 }
