@@ -5,6 +5,8 @@
 //! Hertz window and regime are kept (in design order). `m` starts from the feasible fraction
 //! of a seeded pilot sample and grows by 25 % until `n` contacts are feasible, so the design
 //! stays a Latin hypercube over the box and the constraints only cut it.
+//! [`plan`] takes any [`SamplingDomain`] (the line contact's, the point contact's); the
+//! generation and file format below are the line contact's.
 //!
 //! Cases are solved in chunks with rayon; each chunk is appended in index order and flushed, so
 //! an uninterrupted run writes byte-identical files for a deterministic solver, and an
@@ -24,7 +26,9 @@ use super::file::{
     header_line, record_line, Dataset, Metadata, Record, SolverInfo, FORMAT_NAME, FORMAT_VERSION,
 };
 use super::lhs::maximin_lhs;
+use super::point_domain::PointDomain;
 use super::{ContactCase, Domain};
+use bearing_ehl::point::PointContactCase;
 
 /// What to generate.
 #[derive(Clone, Debug)]
@@ -45,11 +49,43 @@ pub struct GenerateOptions {
     pub chunk: usize,
 }
 
+/// A sampling domain over seven inputs: the map from the unit cube to cases and the feasibility
+/// test that cuts the design (the line contact's [`Domain`], the point contact's
+/// [`PointDomain`]).
+pub trait SamplingDomain {
+    /// The case type.
+    type Case;
+    /// The case at unit-cube point `t`.
+    fn case_at(&self, t: &[f64; 7]) -> Self::Case;
+    /// Whether `case` satisfies the domain's constraints.
+    fn feasible(&self, case: &Self::Case) -> bool;
+}
+
+impl SamplingDomain for Domain {
+    type Case = ContactCase;
+    fn case_at(&self, t: &[f64; 7]) -> ContactCase {
+        Domain::case_at(self, t)
+    }
+    fn feasible(&self, case: &ContactCase) -> bool {
+        self.check(case).is_ok()
+    }
+}
+
+impl SamplingDomain for PointDomain {
+    type Case = PointContactCase;
+    fn case_at(&self, t: &[f64; 7]) -> PointContactCase {
+        PointDomain::case_at(self, t)
+    }
+    fn feasible(&self, case: &PointContactCase) -> bool {
+        self.check(case).is_ok()
+    }
+}
+
 /// The planned cases and the design they come from.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Plan {
+pub struct Plan<C = ContactCase> {
     /// The `n` feasible cases, in design order.
-    pub cases: Vec<ContactCase>,
+    pub cases: Vec<C>,
     /// Points of the full design.
     pub design_points: usize,
     /// Smallest distance in the unit cube.
@@ -68,14 +104,14 @@ pub struct Summary {
 }
 
 /// The deterministic design of `n` feasible cases (see the module doc).
-pub fn plan(n: usize, seed: u64, domain: &Domain) -> Plan {
+pub fn plan<D: SamplingDomain>(n: usize, seed: u64, domain: &D) -> Plan<D::Case> {
     // Pilot: feasible fraction of 4000 uniform points (own stream derived from the seed).
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x9e37_79b9_7f4a_7c15);
     let pilot = 4000;
     let feasible = (0..pilot)
         .filter(|_| {
             let t: [f64; 7] = std::array::from_fn(|_| rng.random::<f64>());
-            domain.check(&domain.case_at(&t)).is_ok()
+            domain.feasible(&domain.case_at(&t))
         })
         .count()
         .max(1);
@@ -83,11 +119,11 @@ pub fn plan(n: usize, seed: u64, domain: &Domain) -> Plan {
     let mut m = ((n as f64 / fraction) * 1.1).ceil() as usize + 8;
     loop {
         let design = maximin_lhs::<7>(m, seed, None);
-        let cases: Vec<ContactCase> = design
+        let cases: Vec<D::Case> = design
             .points
             .iter()
             .map(|t| domain.case_at(t))
-            .filter(|c| domain.check(c).is_ok())
+            .filter(|c| domain.feasible(c))
             .take(n)
             .collect();
         if cases.len() == n {
@@ -272,6 +308,18 @@ mod tests {
         assert_eq!(a.cases.len(), 60);
         assert!(a.cases.iter().all(|c| domain.check(c).is_ok()));
         assert_eq!(a, plan(60, 7, &domain));
+    }
+
+    /// The point-contact domain plans the same way: every planned case feasible, the design
+    /// oversampled to cover the cut, and the plan deterministic.
+    #[test]
+    fn point_plan_is_feasible_and_deterministic() {
+        let domain = PointDomain::default();
+        let a = plan(40, 7, &domain);
+        assert_eq!(a.cases.len(), 40);
+        assert!(a.cases.iter().all(|c| domain.check(c).is_ok()));
+        assert!(a.design_points > 40 && a.design_min_distance > 0.0);
+        assert_eq!(a, plan(40, 7, &domain));
     }
 
     /// An interrupted run (a prefix plus half a line) resumes to the same file as an

@@ -8,6 +8,8 @@
 //! - [`generate`](mod@generate): deterministic, parallel, resumable generation over a solver closure.
 //! - [`formulas`]: regression and Moes formulas (f64), the latter the pipeline stand-in target.
 //! - [`numerical`]: the numerical EHL solver as the dataset solver.
+//! - [`point_domain`]: the point-contact (ball-bearing) domain.
+//! - [`point_numerical`]: the point-contact solver as a dataset solver, with grid-error refusals.
 //! - [`reference`](mod@reference): check that the reference machines of docs/physics.md §6 lie in the domain.
 
 pub mod domain;
@@ -16,6 +18,8 @@ pub mod formulas;
 pub mod generate;
 pub mod lhs;
 pub mod numerical;
+pub mod point_domain;
+pub mod point_numerical;
 pub mod reference;
 
 use serde::{Deserialize, Serialize};
