@@ -6,6 +6,8 @@
 //! finite outputs on success. A panic would abort the test process (an `extern "C"` function
 //! cannot unwind), so a run that completes also shows that none occurred.
 
+mod common;
+
 use bearing_ffi::*;
 use proptest::prelude::*;
 use std::ffi::CStr;
@@ -176,26 +178,8 @@ fn all_finite(out: &BearingOutput) -> bool {
 
 /// A bearing built in `buffer` from a preset with `film`.
 fn built(buffer: &mut Buffer, preset: u32, film: u32) -> *mut BearingHandle {
-    let mut config = MaybeUninit::<BearingConfig>::uninit();
-    let mut handle = std::ptr::null_mut();
-    // SAFETY: valid pointers; the buffer holds BEARING_STORAGE_SIZE aligned bytes.
-    unsafe {
-        assert_eq!(
-            bearing_preset(preset, config.as_mut_ptr()),
-            BearingStatus::Ok
-        );
-        let mut config = config.assume_init();
-        config.film = film;
-        let status = bearing_init(
-            buffer.ptr(0).cast(),
-            BEARING_STORAGE_SIZE,
-            &config,
-            &mut handle,
-            std::ptr::null_mut(),
-        );
-        assert_eq!(status, BearingStatus::Ok);
-    }
-    handle
+    // SAFETY: the buffer holds BEARING_STORAGE_SIZE aligned bytes and outlives the handle.
+    unsafe { common::bearing_from_preset(buffer.ptr(0).cast(), preset, film) }
 }
 
 /// One call of the step interface with hostile arguments.

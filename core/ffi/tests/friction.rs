@@ -4,6 +4,8 @@
 //! the call left them; the dry model's stay zero.
 
 use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
+mod common;
+
 use bearing_ffi::*;
 use std::mem::MaybeUninit;
 
@@ -14,26 +16,8 @@ fn storage() -> Vec<u64> {
 
 /// A bearing built by the C interface from `preset` with `film`.
 fn c_bearing(place: &mut [u64], preset: u32, film: u32) -> *mut BearingHandle {
-    let mut config = MaybeUninit::<BearingConfig>::uninit();
-    let mut handle = std::ptr::null_mut();
-    // SAFETY: valid pointers; `place` holds BEARING_STORAGE_SIZE bytes aligned to 8.
-    unsafe {
-        assert_eq!(
-            bearing_preset(preset, config.as_mut_ptr()),
-            BearingStatus::Ok
-        );
-        let mut config = config.assume_init();
-        config.film = film;
-        let status = bearing_init(
-            place.as_mut_ptr().cast(),
-            BEARING_STORAGE_SIZE,
-            &config,
-            &mut handle,
-            std::ptr::null_mut(),
-        );
-        assert_eq!(status, BearingStatus::Ok);
-    }
-    handle
+    // SAFETY: `place` holds BEARING_STORAGE_SIZE bytes aligned to 8 and outlives the handle.
+    unsafe { common::bearing_from_preset(place.as_mut_ptr().cast(), preset, film) }
 }
 
 /// The inner race orbiting 1.5 µm around a 5 µm downward offset at ω = 1500 rad/s.
