@@ -160,8 +160,8 @@ struct RunArgs {
     /// at --speed-rpm through --settle): a run-up or run-down.
     #[arg(long)]
     speed_end_rpm: Option<f64>,
-    /// Output prefix: <prefix>.csv, <prefix>_b<i>_rollers.csv, <prefix>_b<i>_trace.csv
-    /// (hil-sim trace format), <prefix>_orbit.png, <prefix>_spectrum.png.
+    /// Output prefix P: P.csv, P_bN_rollers.csv, P_bN_trace.csv (N the bearing's number;
+    /// hil-sim trace format), P_orbit.png, P_spectrum.png.
     #[arg(long, default_value = "shaft_run")]
     out: PathBuf,
     /// With --reduce: also run the full model and report the envelope differences.
