@@ -277,18 +277,7 @@ fn solve(a: SolveArgs) -> Result<()> {
             name_flags(e, &[], "the case")
         })
     });
-    let sol = match result {
-        Ok(s) => s,
-        Err(e) => {
-            if a.json {
-                println!(
-                    "{}",
-                    serde_json::json!({"converged": false, "error": format!("{e:#}")})
-                );
-            }
-            return Err(e);
-        }
-    };
+    let sol = failure_as_json(result, a.json)?;
     // Both files or neither: a failed plot leaves no profile behind.
     let mut files = OutputFiles::new();
     if let Some(path) = &a.profile {
@@ -446,6 +435,19 @@ fn convergence_table(a: ConvergenceArgs) -> Result<()> {
     );
     println!("(the default solver reports h_c, h_min extrapolated from its last two grid levels)");
     Ok(())
+}
+
+/// A failed solve of `ehl solve` is also reported on stdout as `{"converged": false,
+/// "error": …}` under `--json`, so that scripts reading stdout see it; the error is returned
+/// as it was.
+fn failure_as_json<T>(result: Result<T>, json: bool) -> Result<T> {
+    if let (Err(e), true) = (&result, json) {
+        println!(
+            "{}",
+            serde_json::json!({"converged": false, "error": format!("{e:#}")})
+        );
+    }
+    result
 }
 
 #[cfg(test)]

@@ -117,18 +117,7 @@ pub(super) fn solve(a: &SolveArgs) -> Result<()> {
             other => anyhow!("{other}; the case is set by {}", a.case.flags()),
         })
     });
-    let sol = match result {
-        Ok(s) => s,
-        Err(e) => {
-            if a.json {
-                println!(
-                    "{}",
-                    serde_json::json!({"converged": false, "error": format!("{e:#}")})
-                );
-            }
-            return Err(e);
-        }
-    };
+    let sol = super::failure_as_json(result, a.json)?;
     let mut files = OutputFiles::new();
     if let Some(path) = &a.plot {
         let temp = files
