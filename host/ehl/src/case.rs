@@ -49,6 +49,24 @@ pub(crate) fn check(field: &'static str, value: f64, lo: f64, hi: f64) -> Result
     }
 }
 
+/// The ranges of the solids' reduced modulus E' (Pa), the oil's pressure–viscosity
+/// coefficient α (1/Pa) and its ambient viscosity η₀ (Pa·s) every contact case accepts.
+pub(crate) fn check_solids_and_oil(
+    reduced_modulus_pa: f64,
+    pressure_viscosity_pa_inv: f64,
+    viscosity_pa_s: f64,
+) -> Result<(), EhlError> {
+    check("reduced_modulus_pa", reduced_modulus_pa, 1e6, 1e13)?;
+    check(
+        "pressure_viscosity_pa_inv",
+        pressure_viscosity_pa_inv,
+        0.0,
+        1e-6,
+    )?;
+    check("viscosity_pa_s", viscosity_pa_s, 1e-5, 1e4)?;
+    Ok(())
+}
+
 impl ContactCase {
     /// Validating constructor. Ranges are generous physical bounds (far wider than the
     /// docs/physics.md §5.3 domain); NaN, infinities, zero and negative values are refused.
@@ -68,14 +86,11 @@ impl ContactCase {
         )?;
         check("entrainment_speed_m_s", entrainment_speed_m_s, 1e-6, 1e3)?;
         check("reduced_radius_m", reduced_radius_m, 1e-6, 10.0)?;
-        check("reduced_modulus_pa", reduced_modulus_pa, 1e6, 1e13)?;
-        check(
-            "pressure_viscosity_pa_inv",
+        check_solids_and_oil(
+            reduced_modulus_pa,
             pressure_viscosity_pa_inv,
-            0.0,
-            1e-6,
+            viscosity_pa_s,
         )?;
-        check("viscosity_pa_s", viscosity_pa_s, 1e-5, 1e4)?;
         Ok(Self {
             load_per_length_n_per_m,
             entrainment_speed_m_s,

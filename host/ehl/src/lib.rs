@@ -159,6 +159,31 @@ impl Default for SolverOptions {
     }
 }
 
+/// The iteration limits every solver's options accept: at most 10 000 iterations, pressure
+/// and load tolerances in (0, 0.1).
+pub(crate) fn check_iteration(
+    max_iterations: usize,
+    pressure_tolerance: f64,
+    load_tolerance: f64,
+) -> Result<(), EhlError> {
+    let bad = |field, message: &str| {
+        Err(EhlError::InvalidOption {
+            field,
+            message: message.to_string(),
+        })
+    };
+    if max_iterations == 0 || max_iterations > 10_000 {
+        return bad("max_iterations", "must be in 1..=10000");
+    }
+    if !(pressure_tolerance > 0.0 && pressure_tolerance < 0.1) {
+        return bad("pressure_tolerance", "must be in (0, 0.1)");
+    }
+    if !(load_tolerance > 0.0 && load_tolerance < 0.1) {
+        return bad("load_tolerance", "must be in (0, 0.1)");
+    }
+    Ok(())
+}
+
 impl SolverOptions {
     /// The default physics with the grid sequence capped at 401 nodes (same median cost as the
     /// default on the bench's LHS samples, p95 about 3× lower; less accurate at high M, see
@@ -186,16 +211,11 @@ impl SolverOptions {
         if !(self.x_end.is_finite() && self.x_end >= 1.2 && self.x_end <= 10.0) {
             return bad("x_end", "must be finite, in [1.2, 10]");
         }
-        if self.max_iterations == 0 || self.max_iterations > 10_000 {
-            return bad("max_iterations", "must be in 1..=10000");
-        }
-        if !(self.pressure_tolerance > 0.0 && self.pressure_tolerance < 0.1) {
-            return bad("pressure_tolerance", "must be in (0, 0.1)");
-        }
-        if !(self.load_tolerance > 0.0 && self.load_tolerance < 0.1) {
-            return bad("load_tolerance", "must be in (0, 0.1)");
-        }
-        Ok(())
+        check_iteration(
+            self.max_iterations,
+            self.pressure_tolerance,
+            self.load_tolerance,
+        )
     }
 
     fn grid_spec(&self, nodes: usize, thin_film: bool) -> GridSpec {

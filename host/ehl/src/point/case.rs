@@ -7,7 +7,7 @@
 //! contacts (Nijenbanning, Venner & Moes 1994): M = W(2U)^−¾, L = G(2U)^¼, H = (h/R_x)(2U)^−½.
 
 use super::hertz::{radius_ratio_of_ellipticity, HertzEllipse};
-use crate::case::check;
+use crate::case::{check, check_solids_and_oil};
 use crate::EhlError;
 
 /// One steady, isothermal, Newtonian point contact (all SI).
@@ -54,14 +54,11 @@ impl PointContactCase {
             1.0,
             MAX_RADIUS_RATIO,
         )?;
-        check("reduced_modulus_pa", reduced_modulus_pa, 1e6, 1e13)?;
-        check(
-            "pressure_viscosity_pa_inv",
+        check_solids_and_oil(
+            reduced_modulus_pa,
             pressure_viscosity_pa_inv,
-            0.0,
-            1e-6,
+            viscosity_pa_s,
         )?;
-        check("viscosity_pa_s", viscosity_pa_s, 1e-5, 1e4)?;
         Ok(Self {
             load_n,
             entrainment_speed_m_s,

@@ -102,16 +102,11 @@ impl PointSolverOptions {
         if !(self.y_half.is_finite() && (1.5..=10.0).contains(&self.y_half)) {
             return bad("y_half", "must be finite, in [1.5, 10]");
         }
-        if self.max_iterations == 0 || self.max_iterations > 10_000 {
-            return bad("max_iterations", "must be in 1..=10000");
-        }
-        if !(self.pressure_tolerance > 0.0 && self.pressure_tolerance < 0.1) {
-            return bad("pressure_tolerance", "must be in (0, 0.1)");
-        }
-        if !(self.load_tolerance > 0.0 && self.load_tolerance < 0.1) {
-            return bad("load_tolerance", "must be in (0, 0.1)");
-        }
-        Ok(())
+        crate::check_iteration(
+            self.max_iterations,
+            self.pressure_tolerance,
+            self.load_tolerance,
+        )
     }
 }
 
