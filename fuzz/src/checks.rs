@@ -7,7 +7,7 @@
 #![allow(dead_code)]
 
 use bearing_core::{Bearing, BearingDesign, BearingOutput, FilmKind, OperatingState};
-use bearing_hil::trace::{binary, csv, ValidationOptions};
+use bearing_trace::{binary, csv, ValidationOptions};
 
 /// Binary trace decoder (header, records, CRC, validation): a trace or an error, never a
 /// panic; an accepted trace re-encodes to the same bytes.

@@ -4,14 +4,15 @@
 //!
 //! `kernel`, `outputs`, `trace::wire` and `trace::crc32` are the `no_std` crate
 //! `bearing-hil-kernel`, which the firmware (`hil-sim/firmware`) runs too; they are re-exported
-//! here under their module names.
+//! here under their module names. `trace` (the trace formats and their validation) is the crate
+//! `bearing-trace`, which the fuzz targets build without the rest of the harness.
 
 pub use bearing_hil_kernel::{kernel, outputs};
 pub mod qemu;
 pub mod realtime;
 pub mod reference;
 pub mod replay;
-pub mod trace;
+pub use bearing_trace as trace;
 pub mod wiring;
 
 pub use trace::{crc32, wire};

@@ -66,7 +66,7 @@ pub fn write_run_csv(path: &Path, result: &RunResult) -> std::io::Result<()> {
 }
 
 /// Writes the inner-race kinematics of bearing `probe` in the trace CSV format of `hil-sim`
-/// (hil-sim/src/trace/csv.rs): `# bearing: <id>`, `# lubricant: <id>`, `# sample_rate_hz: <1/Δt>`,
+/// (hil-sim/trace/src/csv.rs): `# bearing: <id>`, `# lubricant: <id>`, `# sample_rate_hz: <1/Δt>`,
 /// then `time_s,speed_rad_s,x_m,y_m,vx_m_s,vy_m_s`, time from 0 at the first recorded sample,
 /// speed the spin speed at each sample (it changes along a ramp).
 pub fn write_kinematics_trace(

@@ -10,6 +10,9 @@
 //! files), which is what the firmware streams. Both pass through the same checks
 //! ([`validate`]): finite numbers, strictly increasing time, no gaps, valid identifiers and rate.
 //! Every error says where (line and column, or record and field, or byte offset) and what.
+//!
+//! A crate of its own (`bearing-trace`, re-exported by hil-sim as `bearing_hil::trace`) so that
+//! the fuzz targets of the decoders build without the harness's solver and plots.
 
 pub mod binary;
 pub mod csv;
@@ -280,6 +283,7 @@ impl Trace {
     }
 
     /// Writes the trace (format from the extension) after validating it.
+    #[cfg(feature = "write")]
     pub fn write(&self, path: &Path, options: &ValidationOptions) -> Result<(), TraceError> {
         validate::check_trace(self, options, validate::Numbering::Record)?;
         let bytes = match Format::of_path(path) {
