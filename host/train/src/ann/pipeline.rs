@@ -231,4 +231,37 @@ mod tests {
         assert_eq!(ModelFile::<PointDomain>::load(&file).unwrap(), model);
         std::fs::remove_dir_all(&dir).unwrap();
     }
+
+    /// The committed point-contact model (data/ann/point_numerical_model.json) against the
+    /// point solver's Richardson films on the held-out test set of its dataset (the split of
+    /// its seed, recomputed here): the targets for h_c and h_min (R² ≥ 0.9995,
+    /// median ≤ 0.5 %, p99 ≤ 2 %) for the f64 and the 16-bit integer network, and the integer
+    /// network within 0.2 % of the f64 one on every test case.
+    #[test]
+    fn committed_point_model_meets_the_targets() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/ann");
+        let model =
+            ModelFile::<PointDomain>::load(&root.join("point_numerical_model.json")).unwrap();
+        let (_, samples) =
+            load_contact_samples::<PointContactCase>(&root.join("point_numerical_dataset.jsonl"))
+                .unwrap();
+        let (_, _, te) = split_samples(&samples, model.trained.options.seed);
+        assert!(te.len() >= 100, "{} test cases", te.len());
+        let f64s: Vec<(f64, f64)> = te.cases.iter().map(|c| model.trained.predict(c)).collect();
+        let ints = predict_int(&model.trained, model.quantised.as_ref().unwrap(), &te);
+        for films in [&f64s, &ints] {
+            let m = Metrics::of(films, &te.films);
+            for e in [&m.central, &m.minimum] {
+                assert!(
+                    e.r2 >= 0.9995 && e.median_pct <= 0.5 && e.p99_pct <= 2.0,
+                    "{e:?}"
+                );
+            }
+        }
+        let d = Metrics::of(&ints, &f64s);
+        assert!(
+            d.central.max_pct <= 0.2 && d.minimum.max_pct <= 0.2,
+            "{d:?}"
+        );
+    }
 }
