@@ -3,8 +3,12 @@
 
 use std::path::PathBuf;
 
-use anyhow::Result;
-use bearing_train::dataset::{self, numerical, reference, Domain, GenerateOptions, SolverInfo};
+use anyhow::{bail, Result};
+use bearing_ehl::point::PointSolverOptions;
+use bearing_train::dataset::point_domain::PointDomain;
+use bearing_train::dataset::{
+    self, numerical, point_numerical, reference, Domain, GenerateOptions, LineFilms, SolverInfo,
+};
 use clap::{Args, Subcommand, ValueEnum};
 
 /// `bearing dataset …`
@@ -35,8 +39,25 @@ enum SolverChoice {
     Moes,
 }
 
+/// Which contact the dataset samples.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ContactKind {
+    /// Cylindrical roller: line contact over `Domain` (docs/physics.md §5.3).
+    Line,
+    /// Ball: point contact over `PointDomain` (docs/point_contact.md, "Dataset"), solved by the
+    /// point-contact solver with Richardson targets and per-row grid errors.
+    Point,
+}
+
 #[derive(Args)]
 struct GenerateArgs {
+    /// Contact kind.
+    #[arg(long, value_enum, default_value = "line")]
+    contact: ContactKind,
+    /// Point contact: nodes per direction of the finest grid (2ⁿ + 1 in 33 … 513; the dataset
+    /// targets are made at 129).
+    #[arg(long, default_value_t = 129)]
+    nodes: usize,
     /// Number of feasible cases (1 … 1 000 000).
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
     n: u64,
@@ -66,6 +87,14 @@ pub fn run(args: DatasetArgs) -> Result<()> {
 }
 
 fn generate(args: GenerateArgs) -> Result<()> {
+    if args.contact == ContactKind::Point {
+        return generate_point(args);
+    }
+    if args.nodes != 129 {
+        bail!(
+            "--nodes applies to --contact point only (the line contact's grid sequence is fixed)"
+        );
+    }
     let command = std::env::args().collect::<Vec<_>>().join(" ");
     // The accuracy-reference settings of the solver (Roelands, Dowson–Higginson density,
     // docs/physics.md §5.2 tolerances), with the whole grid sequence to 801 nodes and the Richardson
@@ -93,11 +122,51 @@ fn generate(args: GenerateArgs) -> Result<()> {
         chunk: args.chunk as usize,
     };
     let summary = match args.solver {
-        SolverChoice::Moes => dataset::generate(&args.out, &options, dataset::moes_solver)?,
-        SolverChoice::Numerical => {
-            dataset::generate(&args.out, &options, |c| numerical::solve(c, &ehl_options))?
-        }
+        SolverChoice::Moes => dataset::generate(&args.out, &options, |c| {
+            dataset::moes_solver(c).map(LineFilms::from)
+        })?,
+        SolverChoice::Numerical => dataset::generate(&args.out, &options, |c| {
+            numerical::solve(c, &ehl_options).map(LineFilms::from)
+        })?,
     };
+    report(&args, summary);
+    Ok(())
+}
+
+/// Point contacts: the point solver at its accuracy settings (Roelands, Dowson–Higginson,
+/// default domain) with `--nodes` per direction; h_c and h_min Richardson-extrapolated from the
+/// two finest levels, refused above `point_numerical::MAX_GRID_ERROR`.
+fn generate_point(args: GenerateArgs) -> Result<()> {
+    if !matches!(args.solver, SolverChoice::Numerical) {
+        bail!("--solver moes applies to --contact line only; point contacts use the point solver");
+    }
+    if !(33..=513).contains(&args.nodes) || !(args.nodes - 1).is_power_of_two() {
+        bail!(
+            "--nodes {}: must be 2ⁿ + 1 in 33 … 513 (two grid levels for the Richardson value)",
+            args.nodes
+        );
+    }
+    let solver_options = PointSolverOptions {
+        nodes: args.nodes,
+        ..PointSolverOptions::default()
+    };
+    let options = GenerateOptions {
+        n: args.n as usize,
+        seed: args.seed,
+        domain: PointDomain::default(),
+        solver: point_numerical::solver_info(&solver_options),
+        command: std::env::args().collect::<Vec<_>>().join(" "),
+        progress: !args.quiet,
+        chunk: args.chunk as usize,
+    };
+    let summary = dataset::generate(&args.out, &options, |c| {
+        point_numerical::solve(c, &solver_options)
+    })?;
+    report(&args, summary);
+    Ok(())
+}
+
+fn report(args: &GenerateArgs, summary: dataset::generate::Summary) {
     eprintln!(
         "{}: {} records resumed, {} written, {} failed in total",
         args.out.display(),
@@ -105,7 +174,6 @@ fn generate(args: GenerateArgs) -> Result<()> {
         summary.written,
         summary.failed
     );
-    Ok(())
 }
 
 fn check_domain(json: bool) -> Result<()> {

@@ -1,21 +1,26 @@
-//! `bearing train`: train the film network on a dataset (`bearing train --data … --arch …`),
-//! run the architecture sweep (`bearing train sweep`), or measure the compiled core models on a
+//! `bearing train`: train the film network on a dataset (`bearing train --data … --arch …`,
+//! line contacts, or `--contact point` on a point-contact dataset), run the architecture sweep (`bearing train sweep`), or measure the compiled core models on a
 //! model's test set (`bearing train evaluate`).
 
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
 use bearing_core::film::{ann, FilmModel, FilmSource};
+use bearing_ehl::point::PointContactCase;
 use bearing_host_common::output::{write_with, OutputFiles};
 use bearing_train::ann::export::fingerprint;
 use bearing_train::ann::features::{InputSet, TargetForm};
 use bearing_train::ann::metrics::Metrics;
 use bearing_train::ann::mlp::Activation;
 use bearing_train::ann::model::{CoreReport, ModelFile};
-use bearing_train::ann::pipeline::{load_samples, split_samples, train_model};
+use bearing_train::ann::pipeline::{
+    load_contact_samples, load_samples, split_samples, train_model,
+};
 use bearing_train::ann::sweep::{heading, markdown, run_sweep, SweepConfig};
 use bearing_train::ann::train::{Solver, TrainOptions};
 use clap::{Args, Subcommand};
+
+use super::dataset::ContactKind;
 
 /// `bearing train …`
 #[derive(Args)]
@@ -38,9 +43,11 @@ enum TrainCommand {
 /// Options shared by training and the sweep.
 #[derive(Args, Clone)]
 struct Common {
-    /// Network inputs.
-    #[arg(long, value_enum, default_value = "wug")]
-    inputs: InputSet,
+    /// Network inputs (default: `wug` for line contacts, `mlk-g-eta-modulus` for point
+    /// contacts; `wug`, `wug-eta-modulus` are the line contact's, `mlk`, `mlk-g-eta-modulus`
+    /// the point contact's).
+    #[arg(long, value_enum)]
+    inputs: Option<InputSet>,
     /// Output form.
     #[arg(long, value_enum, default_value = "log-ratio")]
     target: TargetForm,
@@ -66,14 +73,27 @@ struct Common {
 }
 
 impl Common {
-    fn options(&self, hidden: Vec<usize>, activation: Activation) -> Result<TrainOptions> {
+    fn options(
+        &self,
+        hidden: Vec<usize>,
+        activation: Activation,
+        contact: ContactKind,
+    ) -> Result<TrainOptions> {
         if !(self.reg.is_finite() && (0.0..=1.0).contains(&self.reg)) {
             bail!("--reg must be a finite number in [0, 1], got {}", self.reg);
+        }
+        let allowed = match contact {
+            ContactKind::Line => [InputSet::Wug, InputSet::WugEtaModulus],
+            ContactKind::Point => [InputSet::MlkGEtaModulus, InputSet::Mlk],
+        };
+        let inputs = self.inputs.unwrap_or(allowed[0]);
+        if !allowed.contains(&inputs) {
+            bail!("--inputs {inputs:?} is not an input set of the {contact:?} contact (allowed: {allowed:?})");
         }
         Ok(TrainOptions {
             hidden,
             activation,
-            inputs: self.inputs,
+            inputs,
             target: self.target,
             regularisation: self.reg,
             max_epochs: self.max_epochs as usize,
@@ -90,6 +110,9 @@ struct TrainOne {
     /// Dataset file (`bearing dataset generate`).
     #[arg(long, required = true)]
     data: Option<PathBuf>,
+    /// Contact kind of the dataset (a point-contact model is not exported to the core).
+    #[arg(long, value_enum, default_value = "line")]
+    contact: ContactKind,
     /// Hidden layers as `LxN` (e.g. `3x14`) or widths `14-14-10` (1–8 layers of 1–64).
     #[arg(long, default_value = "2x14")]
     arch: String,
@@ -187,8 +210,14 @@ pub fn run(args: TrainArgs) -> Result<()> {
 fn print_metrics(name: &str, m: &Metrics) {
     for (film, e) in [("h_c", &m.central), ("h_min", &m.minimum)] {
         println!(
-            "{name:<26} {film:<6} R² {:.6}  R²(ln) {:.6}  |rel| median {:.3} %  p90 {:.3} %  p99 {:.3} %  max {:.3} %",
-            e.r2, e.r2_log, e.median_pct, e.p90_pct, e.p99_pct, e.max_pct
+            "{name:<26} {film:<6} R² {:.6}  R²(ln) {:.6}  |rel| median {:.3} %  p90 {:.3} %  {}p99 {:.3} %  max {:.3} %",
+            e.r2,
+            e.r2_log,
+            e.median_pct,
+            e.p90_pct,
+            e.p95_pct.map_or(String::new(), |p| format!("p95 {p:.3} %  ")),
+            e.p99_pct,
+            e.max_pct
         );
     }
 }
@@ -198,26 +227,36 @@ fn train_one(args: TrainOne) -> Result<()> {
         bail!("--data and --out are required")
     };
     let hidden = parse_arch(&args.arch)?;
-    let options = args.common.options(hidden, args.act)?;
+    let options = args.common.options(hidden, args.act, args.contact)?;
     if !(args.weight_bits == 8 || args.weight_bits == 16) {
         bail!("--weight-bits must be 8 or 16, got {}", args.weight_bits);
     }
-    let (data, samples) = load_samples(&data_path)?;
     let command = std::env::args().collect::<Vec<_>>().join(" ");
-    eprintln!("training {} on {} solved cases …", args.arch, samples.len());
-    let model = train_model(
-        &data_path.display().to_string(),
-        &data,
-        &samples,
-        &options,
-        args.weight_bits,
-        command,
-    )?;
-    write_with(&out, |temp| model.save(temp))?;
+    let file = data_path.display().to_string();
+    let (trained, test) = match args.contact {
+        ContactKind::Line => {
+            let (data, samples) = load_samples(&data_path)?;
+            eprintln!("training {} on {} solved cases …", args.arch, samples.len());
+            let model = train_model(&file, &data, &samples, &options, args.weight_bits, command)?;
+            write_with(&out, |temp| model.save(temp))?;
+            (model.trained, model.test)
+        }
+        ContactKind::Point => {
+            let (data, samples) = load_contact_samples::<PointContactCase>(&data_path)?;
+            eprintln!(
+                "training {} on {} solved point contacts …",
+                args.arch,
+                samples.len()
+            );
+            let model = train_model(&file, &data, &samples, &options, args.weight_bits, command)?;
+            write_with(&out, |temp| model.save(temp))?;
+            (model.trained, model.test)
+        }
+    };
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&model.test)?);
+        println!("{}", serde_json::to_string_pretty(&test)?);
     } else {
-        let t = &model.trained;
+        let t = &trained;
         println!(
             "{}: {} epochs, validation MSE {:.3e}, {:.1} s",
             out.display(),
@@ -225,22 +264,28 @@ fn train_one(args: TrainOne) -> Result<()> {
             t.validation_mse,
             t.train_seconds
         );
-        println!("test set ({} cases):", model.test.sizes[2]);
-        print_metrics("network f64", &model.test.network_f64);
+        println!("test set ({} cases):", test.sizes[2]);
+        print_metrics("network f64", &test.network_f64);
         print_metrics(
             &format!("network int{}", args.weight_bits),
-            &model.test.network_int,
+            &test.network_int,
         );
-        for (bits, m) in &model.test.int_vs_f64 {
+        for (bits, m) in &test.int_vs_f64 {
             print_metrics(&format!("int{bits} vs f64"), m);
         }
-        print_metrics("regression (DT / DH)", &model.test.regression);
+        let regression = match args.contact {
+            ContactKind::Line => "regression (DT / DH)",
+            ContactKind::Point => "regression (Hamrock–Dowson)",
+        };
+        print_metrics(regression, &test.regression);
     }
     Ok(())
 }
 
 fn sweep(args: SweepArgs) -> Result<()> {
-    let base = args.common.options(vec![], Activation::Tanh)?;
+    let base = args
+        .common
+        .options(vec![], Activation::Tanh, ContactKind::Line)?;
     let mut config = if args.quick {
         SweepConfig::quick(base)
     } else {

@@ -65,6 +65,9 @@ pub fn render(model: &ModelFile) -> Result<String> {
     let (n_in, select, input_set) = match t.options.inputs {
         InputSet::Wug => (3, "[f[0], f[1], f[2]]", "Wug"),
         InputSet::WugEtaModulus => (5, "*f", "WugEtaModulus"),
+        InputSet::Mlk | InputSet::MlkGEtaModulus => {
+            bail!("a point-contact model cannot be exported: the core's film network is the line contact's")
+        }
     };
     let mut o = String::new();
     let prov = &model.provenance;

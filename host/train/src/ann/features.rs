@@ -9,15 +9,101 @@
 //! [`InputSet::Wug`] = (ln W, ln U, ln G) and [`InputSet::WugEtaModulus`] = (ln W, ln U, ln G,
 //! ln η₀, E'/GPa). Which one the data needs is measured (`bearing train --inputs …`).
 //!
-//! Targets. [`TargetForm::LogRatio`]: `ln(h_c/h_DT)` and `ln(h_min/h_DH)` (ratios to the
-//! Dowson–Toyoda / Dowson–Higginson regressions) — strictly positive films, and the network
-//! only learns the regression's error. [`TargetForm::LogHr`]: `ln(h/R)`. [`TargetForm::Direct`]:
-//! `h` in µm, the unconstrained baseline (can go negative).
+//! The point contact (docs/point_contact.md) with Barus viscosity and an incompressible
+//! lubricant depends on Moes' groups M = W(2U)^−¾, L = G(2U)^¼ and the ellipticity k once the
+//! film is scaled (Nijenbanning, Venner & Moes 1994): [`InputSet::Mlk`] = (ln M, ln L, ln k).
+//! Roelands viscosity and Dowson–Higginson density add the groups the line contact adds, and G
+//! is needed to separate α from E′: [`InputSet::MlkGEtaModulus`] = (ln M, ln L, ln k, ln G,
+//! ln η₀, E′/GPa), which determines the point case up to its scale.
+//!
+//! Targets. [`TargetForm::LogRatio`]: `ln(h_c/h_reg,c)` and `ln(h_min/h_reg,min)`, ratios to
+//! the contact's regression formulas (line: Dowson–Toyoda / Dowson–Higginson; point:
+//! Hamrock–Dowson's central and minimum films) — strictly positive films, and the network
+//! only learns the regression's error. [`TargetForm::LogHr`]: `ln(h/R)` (point: R_x).
+//! [`TargetForm::Direct`]: `h` in µm, the unconstrained baseline (can go negative).
 
+use bearing_ehl::point::formulas::{hamrock_dowson_central_film_m, hamrock_dowson_min_film_m};
+use bearing_ehl::point::PointContactCase;
 use serde::{Deserialize, Serialize};
 
 use crate::dataset::formulas::{dowson_higginson_minimum, dowson_toyoda_central};
 use crate::dataset::ContactCase;
+
+/// A contact a film network is trained on: its features, its regression films (the
+/// log-ratio target's reference) and its length scale (the log-h/R target's).
+pub trait FilmCase: Clone + Send + Sync {
+    /// The input sets of this contact.
+    const INPUT_SETS: &'static [InputSet];
+    /// The features of `set`; `set.len()` NaNs for a set of the other contact (which
+    /// [`crate::ann::pipeline::train_model`] refuses before training).
+    fn features(&self, set: InputSet) -> Vec<f64>;
+    /// `(h_c, h_min)` of the contact's regression formulas, m.
+    fn regression_films_m(&self) -> (f64, f64);
+    /// The length the films are scaled by (R, or R_x), m.
+    fn film_scale_m(&self) -> f64;
+}
+
+impl FilmCase for ContactCase {
+    const INPUT_SETS: &'static [InputSet] = &[InputSet::Wug, InputSet::WugEtaModulus];
+
+    fn features(&self, set: InputSet) -> Vec<f64> {
+        let (w, u, g) = self.dimensionless();
+        match set {
+            InputSet::Wug => vec![w.ln(), u.ln(), g.ln()],
+            InputSet::WugEtaModulus => vec![
+                w.ln(),
+                u.ln(),
+                g.ln(),
+                self.viscosity_pa_s.ln(),
+                self.reduced_modulus_pa * 1e-9,
+            ],
+            InputSet::Mlk | InputSet::MlkGEtaModulus => vec![f64::NAN; set.len()],
+        }
+    }
+
+    fn regression_films_m(&self) -> (f64, f64) {
+        let (dt, dh) = regression_films_over_r(self);
+        (dt * self.reduced_radius_m, dh * self.reduced_radius_m)
+    }
+
+    fn film_scale_m(&self) -> f64 {
+        self.reduced_radius_m
+    }
+}
+
+impl FilmCase for PointContactCase {
+    const INPUT_SETS: &'static [InputSet] = &[InputSet::Mlk, InputSet::MlkGEtaModulus];
+
+    fn features(&self, set: InputSet) -> Vec<f64> {
+        let mlk = [
+            self.moes_m().ln(),
+            self.moes_l().ln(),
+            self.hertz().ellipticity.ln(),
+        ];
+        match set {
+            InputSet::Mlk => mlk.to_vec(),
+            InputSet::MlkGEtaModulus => {
+                let mut f = mlk.to_vec();
+                f.push(self.material_parameter().ln());
+                f.push(self.viscosity_pa_s.ln());
+                f.push(self.reduced_modulus_pa * 1e-9);
+                f
+            }
+            InputSet::Wug | InputSet::WugEtaModulus => vec![f64::NAN; set.len()],
+        }
+    }
+
+    fn regression_films_m(&self) -> (f64, f64) {
+        (
+            hamrock_dowson_central_film_m(self),
+            hamrock_dowson_min_film_m(self),
+        )
+    }
+
+    fn film_scale_m(&self) -> f64 {
+        self.radius_x_m
+    }
+}
 
 /// Network input set (see the module doc).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
@@ -27,14 +113,19 @@ pub enum InputSet {
     Wug,
     /// (ln W, ln U, ln G, ln η₀, E' in GPa).
     WugEtaModulus,
+    /// Point contact: (ln M, ln L, ln k).
+    Mlk,
+    /// Point contact: (ln M, ln L, ln k, ln G, ln η₀, E′ in GPa).
+    MlkGEtaModulus,
 }
 
 impl InputSet {
     /// Number of inputs.
     pub fn len(self) -> usize {
         match self {
-            InputSet::Wug => 3,
+            InputSet::Wug | InputSet::Mlk => 3,
             InputSet::WugEtaModulus => 5,
+            InputSet::MlkGEtaModulus => 6,
         }
     }
 
@@ -44,14 +135,8 @@ impl InputSet {
     }
 
     /// The features of a case.
-    pub fn features(self, case: &ContactCase) -> Vec<f64> {
-        let (w, u, g) = case.dimensionless();
-        let mut f = vec![w.ln(), u.ln(), g.ln()];
-        if self == InputSet::WugEtaModulus {
-            f.push(case.viscosity_pa_s.ln());
-            f.push(case.reduced_modulus_pa * 1e-9);
-        }
-        f
+    pub fn features<C: FilmCase>(self, case: &C) -> Vec<f64> {
+        case.features(self)
     }
 }
 
@@ -78,12 +163,12 @@ pub fn regression_films_over_r(case: &ContactCase) -> (f64, f64) {
 
 impl TargetForm {
     /// Targets `[central, minimum]` from films (m).
-    pub fn encode(self, case: &ContactCase, films: (f64, f64)) -> [f64; 2] {
-        let r = case.reduced_radius_m;
+    pub fn encode<C: FilmCase>(self, case: &C, films: (f64, f64)) -> [f64; 2] {
+        let r = case.film_scale_m();
         match self {
             TargetForm::LogRatio => {
-                let (dt, dh) = regression_films_over_r(case);
-                [(films.0 / (dt * r)).ln(), (films.1 / (dh * r)).ln()]
+                let (c, m) = case.regression_films_m();
+                [(films.0 / c).ln(), (films.1 / m).ln()]
             }
             TargetForm::LogHr => [(films.0 / r).ln(), (films.1 / r).ln()],
             TargetForm::Direct => [films.0 * 1e6, films.1 * 1e6],
@@ -91,12 +176,12 @@ impl TargetForm {
     }
 
     /// Films (m) from targets.
-    pub fn decode(self, case: &ContactCase, t: [f64; 2]) -> (f64, f64) {
-        let r = case.reduced_radius_m;
+    pub fn decode<C: FilmCase>(self, case: &C, t: [f64; 2]) -> (f64, f64) {
+        let r = case.film_scale_m();
         match self {
             TargetForm::LogRatio => {
-                let (dt, dh) = regression_films_over_r(case);
-                (dt * r * t[0].exp(), dh * r * t[1].exp())
+                let (c, m) = case.regression_films_m();
+                (c * t[0].exp(), m * t[1].exp())
             }
             TargetForm::LogHr => (r * t[0].exp(), r * t[1].exp()),
             TargetForm::Direct => (t[0] * 1e-6, t[1] * 1e-6),

@@ -16,6 +16,9 @@ pub struct FilmErrors {
     pub median_pct: f64,
     /// 90th percentile of |ĥ/h − 1|, percent.
     pub p90_pct: f64,
+    /// 95th percentile, percent (a model file may omit it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub p95_pct: Option<f64>,
     /// 99th percentile, percent.
     pub p99_pct: f64,
     /// Maximum, percent.
@@ -54,6 +57,7 @@ pub fn film_errors(pred: &[f64], truth: &[f64]) -> FilmErrors {
         r2_log: r_squared(&log_pred, &log_truth),
         median_pct: percentile(&rel, 0.5),
         p90_pct: percentile(&rel, 0.9),
+        p95_pct: Some(percentile(&rel, 0.95)),
         p99_pct: percentile(&rel, 0.99),
         max_pct: rel.last().copied().unwrap_or(f64::NAN),
     }

@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
+use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
 use super::metrics::Metrics;
@@ -64,9 +65,10 @@ pub struct CoreReport {
     pub fallbacks: usize,
 }
 
-/// The model file.
+/// The model file; `D` is the training domain (the line contact's [`Domain`], which the core
+/// guards, or the point contact's).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ModelFile {
+pub struct ModelFile<D = Domain> {
     /// Always [`MODEL_FORMAT`].
     pub format: String,
     /// Always [`MODEL_VERSION`].
@@ -74,7 +76,7 @@ pub struct ModelFile {
     /// Network, normalisation, training options and statistics.
     pub trained: Trained,
     /// Training domain (the core's guard uses it).
-    pub domain: Domain,
+    pub domain: D,
     /// Integer version of the network.
     pub quantised: Option<Quantised>,
     /// Test-set figures.
@@ -83,12 +85,12 @@ pub struct ModelFile {
     pub provenance: Provenance,
 }
 
-impl ModelFile {
+impl<D: Serialize + DeserializeOwned> ModelFile<D> {
     /// Read and check the format.
     pub fn load(path: &Path) -> Result<Self> {
         let text = std::fs::read_to_string(path)
             .with_context(|| format!("reading model {}", path.display()))?;
-        let m: ModelFile = serde_json::from_str(&text)
+        let m: ModelFile<D> = serde_json::from_str(&text)
             .with_context(|| format!("{} is not a film model file", path.display()))?;
         if m.format != MODEL_FORMAT || m.version != MODEL_VERSION {
             bail!(

@@ -24,7 +24,7 @@ use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use super::features::{InputSet, Normaliser, TargetForm};
+use super::features::{FilmCase, InputSet, Normaliser, TargetForm};
 use super::metrics::Metrics;
 use super::mlp::{Activation, Mlp};
 use super::trainlm::{mse, trainlm, TrainingData, TrainlmParams};
@@ -94,20 +94,29 @@ impl Default for TrainOptions {
     }
 }
 
-/// Solved cases and their films.
-#[derive(Clone, Debug, Default)]
-pub struct Samples {
+/// Solved cases (line or point contacts) and their films.
+#[derive(Clone, Debug)]
+pub struct Samples<C = ContactCase> {
     /// Contacts.
-    pub cases: Vec<ContactCase>,
+    pub cases: Vec<C>,
     /// `(h_c, h_min)` in metres.
     pub films: Vec<(f64, f64)>,
 }
 
-impl Samples {
+impl<C> Default for Samples<C> {
+    fn default() -> Self {
+        Self {
+            cases: Vec::new(),
+            films: Vec::new(),
+        }
+    }
+}
+
+impl<C: Clone> Samples<C> {
     /// The samples at `indices`.
-    pub fn subset(&self, indices: &[usize]) -> Samples {
+    pub fn subset(&self, indices: &[usize]) -> Samples<C> {
         Samples {
-            cases: indices.iter().map(|&i| self.cases[i]).collect(),
+            cases: indices.iter().map(|&i| self.cases[i].clone()).collect(),
             films: indices.iter().map(|&i| self.films[i]).collect(),
         }
     }
@@ -155,14 +164,14 @@ pub struct Trained {
 
 impl Trained {
     /// Predicted `(h_c, h_min)` in metres.
-    pub fn predict(&self, case: &ContactCase) -> (f64, f64) {
+    pub fn predict<C: FilmCase>(&self, case: &C) -> (f64, f64) {
         let x = self.input_norm.forward(&self.options.inputs.features(case));
         let y = self.output_norm.inverse(&self.net.forward(&x));
         self.options.target.decode(case, [y[0], y[1]])
     }
 
     /// Metrics on a sample set.
-    pub fn evaluate(&self, samples: &Samples) -> Metrics {
+    pub fn evaluate<C: FilmCase>(&self, samples: &Samples<C>) -> Metrics {
         let pred: Vec<(f64, f64)> = samples.cases.par_iter().map(|c| self.predict(c)).collect();
         Metrics::of(&pred, &samples.films)
     }
@@ -257,8 +266,8 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
 }
 
 /// Normalised inputs and targets of a sample set.
-fn prepare(
-    samples: &Samples,
+fn prepare<C: FilmCase>(
+    samples: &Samples<C>,
     options: &TrainOptions,
     inn: &Normaliser,
     out: &Normaliser,
@@ -319,7 +328,11 @@ fn minpack(net: Mlp, data: &TrainingData) -> (Mlp, f64, usize) {
 
 /// Train on `train`, early-stopping on `validation`. The test set is not an argument: it is
 /// evaluated by the caller once the network is final.
-pub fn train(train: &Samples, validation: &Samples, options: &TrainOptions) -> Trained {
+pub fn train<C: FilmCase>(
+    train: &Samples<C>,
+    validation: &Samples<C>,
+    options: &TrainOptions,
+) -> Trained {
     let start = Instant::now();
     let input_norm = Normaliser::fit_with_margin(
         &train

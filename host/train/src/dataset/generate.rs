@@ -5,8 +5,8 @@
 //! Hertz window and regime are kept (in design order). `m` starts from the feasible fraction
 //! of a seeded pilot sample and grows by 25 % until `n` contacts are feasible, so the design
 //! stays a Latin hypercube over the box and the constraints only cut it.
-//! [`plan`] takes any [`SamplingDomain`] (the line contact's, the point contact's); the
-//! generation and file format below are the line contact's.
+//! [`plan`] takes any [`SamplingDomain`] and [`generate`] any [`DatasetContact`] (the line
+//! contact's, the point contact's).
 //!
 //! Cases are solved in chunks with rayon; each chunk is appended in index order and flushed, so
 //! an uninterrupted run writes byte-identical files for a deterministic solver, and an
@@ -23,7 +23,8 @@ use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 
 use super::file::{
-    header_line, record_line, Dataset, Metadata, Record, SolverInfo, FORMAT_NAME, FORMAT_VERSION,
+    header_line, record_line, Dataset, DatasetContact, Metadata, Record, SolvedFilms, SolverInfo,
+    FORMAT_VERSION,
 };
 use super::lhs::maximin_lhs;
 use super::point_domain::PointDomain;
@@ -32,13 +33,13 @@ use bearing_ehl::point::PointContactCase;
 
 /// What to generate.
 #[derive(Clone, Debug)]
-pub struct GenerateOptions {
+pub struct GenerateOptions<C: DatasetContact = ContactCase> {
     /// Number of feasible cases.
     pub n: usize,
     /// Seed of the design.
     pub seed: u64,
     /// Sampling domain.
-    pub domain: Domain,
+    pub domain: C::Domain,
     /// Solver description stored in the header.
     pub solver: SolverInfo,
     /// Command line stored in the header.
@@ -139,15 +140,22 @@ pub fn plan<D: SamplingDomain>(n: usize, seed: u64, domain: &D) -> Plan<D::Case>
 
 /// Run `solver` on one case, turning errors, panics and non-physical films into a failure
 /// reason.
-fn solve_one<F>(solver: &F, index: usize, case: &ContactCase) -> Record
+fn solve_one<C, F>(solver: &F, index: usize, case: &C) -> Record<C>
 where
-    F: Fn(&ContactCase) -> Result<(f64, f64), String> + Sync,
+    C: DatasetContact,
+    F: Fn(&C) -> Result<C::Films, String> + Sync,
 {
     let outcome = match catch_unwind(AssertUnwindSafe(|| solver(case))) {
-        Ok(Ok((c, m))) if c.is_finite() && m.is_finite() && c > 0.0 && m > 0.0 => Ok((c, m)),
-        Ok(Ok((c, m))) => Err(format!(
-            "solver returned a non-physical film: h_c = {c:e} m, h_min = {m:e} m"
-        )),
+        Ok(Ok(films)) => {
+            let (c, m) = films.central_minimum();
+            if c.is_finite() && m.is_finite() && c > 0.0 && m > 0.0 {
+                Ok(films)
+            } else {
+                Err(format!(
+                    "solver returned a non-physical film: h_c = {c:e} m, h_min = {m:e} m"
+                ))
+            }
+        }
         Ok(Err(reason)) => Err(reason),
         Err(panic) => Err(format!(
             "solver panicked: {}",
@@ -158,35 +166,31 @@ where
                 .unwrap_or_default()
         )),
     };
-    match outcome {
-        Ok((c, m)) => Record {
-            index,
-            case: *case,
-            central_m: Some(c),
-            minimum_m: Some(m),
-            error: None,
-        },
-        Err(e) => Record {
-            index,
-            case: *case,
-            central_m: None,
-            minimum_m: None,
-            error: Some(e),
-        },
+    let (films, error) = match outcome {
+        Ok(films) => (Some(films), None),
+        Err(e) => (None, Some(e)),
+    };
+    Record {
+        index,
+        case: case.clone(),
+        groups: case.groups(),
+        films,
+        error,
     }
 }
 
 /// Generate (or resume) the dataset at `path`.
-pub fn generate<F>(path: &Path, options: &GenerateOptions, solver: F) -> Result<Summary>
+pub fn generate<C, F>(path: &Path, options: &GenerateOptions<C>, solver: F) -> Result<Summary>
 where
-    F: Fn(&ContactCase) -> Result<(f64, f64), String> + Sync,
+    C: DatasetContact,
+    F: Fn(&C) -> Result<C::Films, String> + Sync,
 {
     if options.n == 0 {
         bail!("--n must be at least 1");
     }
     let plan = plan(options.n, options.seed, &options.domain);
-    let metadata = Metadata {
-        format: FORMAT_NAME.into(),
+    let metadata = Metadata::<C> {
+        format: C::FORMAT_NAME.into(),
         format_version: FORMAT_VERSION,
         seed: options.seed,
         n: options.n,
@@ -200,7 +204,7 @@ where
     let mut resumed = 0;
     let mut failed = 0;
     let mut file = if path.exists() {
-        let existing = Dataset::load(path)?;
+        let existing = Dataset::<C>::load(path)?;
         let m = &existing.metadata;
         if m.seed != metadata.seed
             || m.n != metadata.n
@@ -254,7 +258,7 @@ where
     bar.set_position(resumed as u64);
     let mut written = 0;
     for chunk in todo.chunks(options.chunk.max(1)) {
-        let records: Vec<Record> = chunk
+        let records: Vec<Record<C>> = chunk
             .par_iter()
             .map(|&i| {
                 let r = solve_one(&solver, i, &plan.cases[i]);
@@ -282,6 +286,7 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dataset::file::LineFilms;
     use crate::dataset::moes_solver;
 
     fn options(n: usize) -> GenerateOptions {
@@ -337,7 +342,7 @@ mod tests {
             if c.load_n < 300.0 {
                 Err("refused: load below 300 N".to_string())
             } else {
-                moes_solver(c)
+                moes_solver(c).map(LineFilms::from)
             }
         };
         let opts = options(40);
@@ -352,7 +357,7 @@ mod tests {
         let s = generate(&part, &opts, solver).unwrap();
         assert_eq!((s.resumed, s.written), (17, 23));
         assert_eq!(std::fs::read_to_string(&part).unwrap(), text);
-        let data = Dataset::load(&full).unwrap();
+        let data = Dataset::<ContactCase>::load(&full).unwrap();
         let refused = data
             .records
             .iter()

@@ -4,7 +4,8 @@
 //!
 //! - [`domain`]: input box, Hertz window, regime test.
 //! - [`lhs`]: maximin-optimised Latin hypercube.
-//! - [`file`](mod@file): the dataset file format (metadata header + one record per case).
+//! - [`file`](mod@file): the dataset file format (metadata header + one record per case), for
+//!   line and point contacts.
 //! - [`generate`](mod@generate): deterministic, parallel, resumable generation over a solver closure.
 //! - [`formulas`]: regression and Moes formulas (f64), the latter the pipeline stand-in target.
 //! - [`numerical`]: the numerical EHL solver as the dataset solver.
@@ -25,7 +26,7 @@ pub mod reference;
 use serde::{Deserialize, Serialize};
 
 pub use domain::Domain;
-pub use file::{Dataset, Metadata, Record, SolverInfo};
+pub use file::{Dataset, DatasetContact, LineFilms, Metadata, Record, SolverInfo};
 pub use generate::{generate, GenerateOptions};
 
 /// One line contact to solve, in SI units (the f64 twin of the core's `ContactInput`).

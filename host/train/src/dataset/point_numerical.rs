@@ -11,6 +11,8 @@
 use bearing_ehl::point::{solve_point, PointContactCase, PointSolverOptions};
 use serde::{Deserialize, Serialize};
 
+use super::SolverInfo;
+
 /// Largest accepted estimated grid error of the raw h_c or h_min (fraction).
 pub const MAX_GRID_ERROR: f64 = 0.073;
 
@@ -29,6 +31,20 @@ pub struct PointFilms {
     pub central_grid_error: f64,
     /// Estimated relative error of the raw h_min.
     pub minimum_grid_error: f64,
+}
+
+/// Dataset header entry for the point-contact solver with `options`.
+pub fn solver_info(options: &PointSolverOptions) -> SolverInfo {
+    SolverInfo {
+        name: "point-numerical".into(),
+        version: format!(
+            "bearing-host {} ehl::point (multigrid Newton, Richardson from the two finest levels, \
+             refusal above {:.1} % grid error)",
+            env!("CARGO_PKG_VERSION"),
+            100.0 * MAX_GRID_ERROR
+        ),
+        options: serde_json::to_value(options).unwrap_or(serde_json::Value::Null),
+    }
 }
 
 /// Solve one case with `options`, refusing the cases of the module doc.
