@@ -43,12 +43,17 @@ def run(elf: str, trace: str, film: str):
     if data[:8] != b"BRGSTEPS":
         sys.exit("outputs.bin: bad magic")
     rollers, count = struct.unpack_from("<HI", data, 10)
-    size = 20 + rollers * 18
+    # A step record (`hil-sim/kernel/src/outputs.rs`): instructions, SysTick and friction
+    # instructions (u32), F_x, F_y, cage angle and five friction fields (f32), then per roller
+    # its load, two films and approach (f32) and two source bytes.
+    fixed, per_roller = 44, 18
+    size = fixed + rollers * per_roller
     steps = []
     for k in range(count):
         at = 16 + k * size
-        instructions, _, fx, fy, _ = struct.unpack_from("<IIfff", data, at)
-        loads = [struct.unpack_from("<f", data, at + 20 + 18 * j)[0] for j in range(rollers)]
+        instructions, _, _, fx, fy = struct.unpack_from("<IIIff", data, at)
+        loads = [struct.unpack_from("<f", data, at + fixed + per_roller * j)[0]
+                 for j in range(rollers)]
         steps.append((instructions, fx, fy, sum(loads) / rollers))
     return steps
 

@@ -7,7 +7,7 @@
 
 use super::law::{BoundLaw, ContactLaw, MAX_APPROACH_M};
 use crate::lanes::Real;
-use crate::math::{max, min, ninth_root_in_range, select};
+use crate::math::{max, min, ninth_root_two_steps, select};
 use crate::params::BearingGeometry;
 
 /// Largest roller tilt the slice pass evaluates (rad): twice the largest the operating state
@@ -290,13 +290,16 @@ fn bounded(approach_m: f32, tilt_rad: f32) -> (f32, f32) {
 }
 
 /// A slice's approach δ_k (m), floored where it does not touch, and r = δ_k^(1/9) there
-/// (0 where it does not touch).
+/// (0 where it does not touch), to within 10⁻⁴ (`math::ninth_root_two_steps`).
 #[inline(always)]
 fn slice_root(slice_approach: f32) -> (f32, f32) {
     let touching = slice_approach > 0.0;
     let d = select(touching, slice_approach, 1.0e-12);
     // The mask multiplies: the root stays in the data flow, the work is fixed.
-    (d, ninth_root_in_range(d) * if touching { 1.0 } else { 0.0 })
+    (
+        d,
+        ninth_root_two_steps(d) * if touching { 1.0 } else { 0.0 },
+    )
 }
 
 /// Σ w, Σ w·x, Σ r, Σ r·x, Σ r·x², Σ r/δ over the slices, with w = δ·r (see

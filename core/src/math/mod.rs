@@ -188,6 +188,22 @@ pub fn pow_10_9_in_range(x: f32) -> f32 {
 /// 3·10⁻⁸), each y·8/9 + (x/9)/y⁸: three squarings, a division and a multiply–add.
 #[inline]
 pub fn ninth_root_in_range(x: f32) -> f32 {
+    ninth_root_newton::<3>(x)
+}
+
+/// [`ninth_root_in_range`] with two Newton steps instead of three: relative error below 10⁻⁴
+/// (9.2·10⁻⁵ at worst over 10⁻¹³ … 1, tested), and never below the root (Newton's steps on
+/// the convex y⁹ − x reach it from above). The slice pass's root (`contact::slicing`): a
+/// slice's load, stiffness and curvature are all proportional to it, so each is that close
+/// to Palmgren's law, for five instructions less per slice on the Cortex-M4.
+#[inline]
+pub(crate) fn ninth_root_two_steps(x: f32) -> f32 {
+    ninth_root_newton::<2>(x)
+}
+
+/// The ninth root of `x` in (0, 1] by `STEPS` Newton steps from the bit-level first guess.
+#[inline(always)]
+fn ninth_root_newton<const STEPS: usize>(x: f32) -> f32 {
     const BIAS: i32 = 127 << 23;
     // Found by a scan of the worst relative error over 10⁻¹³ … 1 (fast-inverse-square-root
     // style); without it the first guess is off by up to 6 %.
@@ -195,15 +211,15 @@ pub fn ninth_root_in_range(x: f32) -> f32 {
     // BIAS + (bits − BIAS)/9 as an unsigned division (x > 0: the sign bit is clear), which
     // rounds the other way than the signed one below x = 1: a one-ulp difference in the guess.
     const OFFSET: u32 = (BIAS - BIAS / 9 + TUNE) as u32;
-    let guess = f32::from_bits(x.to_bits() / 9 + OFFSET);
+    let mut y = f32::from_bits(x.to_bits() / 9 + OFFSET);
     let x_ninth = x * (1.0 / 9.0);
-    let newton = |y: f32| {
+    for _ in 0..STEPS {
         let y2 = y * y;
         let y4 = y2 * y2;
         let y8 = y4 * y4;
-        y * (8.0 / 9.0) + x_ninth / y8
-    };
-    newton(newton(newton(guess)))
+        y = y * (8.0 / 9.0) + x_ninth / y8;
+    }
+    y
 }
 
 /// Sine and cosine of `x` (rad) at a fixed cost. Accurate to a few ulp for |x| ≲ 10⁴ (wrap
@@ -464,6 +480,29 @@ mod tests {
         assert_eq!(pow_10_9(0.0), 0.0);
         assert_eq!(pow_10_9(-1.0), 0.0);
         assert_eq!(pow_10_9(f32::NAN), 0.0);
+    }
+
+    /// Against f64's ninth root over the slice approaches in use (10⁻¹³ … 1 m): within
+    /// 10⁻⁴, and not below it.
+    #[test]
+    fn two_step_ninth_root_matches_f64_from_above() {
+        let mut worst = 0.0f64;
+        let mut x = 1.0e-13f32;
+        while x <= 1.0 {
+            let exact = (x as f64).powf(1.0 / 9.0);
+            let root = ninth_root_two_steps(x) as f64;
+            assert!(
+                root >= exact * (1.0 - 1.0e-7),
+                "x = {x}: {root} below {exact}"
+            );
+            worst = worst.max(rel(ninth_root_two_steps(x), exact));
+            x *= 1.0013;
+        }
+        assert!(worst < 1.0e-4, "worst two-step ninth root error {worst}");
+        assert!(
+            worst > 1.0e-6,
+            "two steps are no more accurate than three: {worst}"
+        );
     }
 
     #[test]
