@@ -3,14 +3,15 @@
 //! over the film network's training domain (docs/physics.md §8.3, docs/friction.md).
 //!
 //! Both sides use the Barus viscosity and the numerical central film, so the comparison tests
-//! the core's traction model (Hertzian pressure, 4-node quadrature), not its film model. The
+//! the core's traction model (Hertzian pressure widened at light load, 4-node quadrature), not
+//! its film model. The
 //! core's viscous friction as the step computes it is the lesser of that and the thermal
 //! (Evans–Johnson) traction; at the bearing's default slide-to-roll ratio of 1 % the thermal
 //! cap is compared too.
 
 use bearing_core::film::ann::model_weights::DOMAIN;
 use bearing_core::film::ann::AnnF32;
-use bearing_core::friction::traction::isothermal_eyring_n;
+use bearing_core::friction::traction::{isothermal_eyring_n, pressure_zone_widening};
 use bearing_core::{ContactInput, FilmModel, FilmSource, FrictionDesign};
 use bearing_ehl::traction::eyring_traction_n;
 use bearing_ehl::{ContactCase, SolverOptions, ViscosityLaw};
@@ -27,11 +28,12 @@ fn halton(mut i: u64, base: u64) -> f64 {
 }
 
 /// Contacts spread over the network's training domain (log-uniform in each of its seven
-/// inputs by a Halton sequence), `count` of those the network's own guard accepts.
-fn domain_contacts(count: usize) -> Vec<ContactInput> {
+/// inputs by a Halton sequence from index `first`), `count` of those the network's own guard
+/// accepts.
+fn domain_contacts(first: u64, count: usize) -> Vec<ContactInput> {
     const BASES: [u64; 7] = [2, 3, 5, 7, 11, 13, 17];
     let mut out = Vec::new();
-    for i in 1..5000u64 {
+    for i in first..first + 50_000 {
         let v: Vec<f32> = DOMAIN
             .inputs
             .iter()
@@ -68,20 +70,17 @@ fn median_p95(mut v: Vec<f64>) -> (f64, f64) {
 }
 
 /// Moes' M from which a contact counts as elastohydrodynamic here: its pressure is then close
-/// to Hertz's, which the core's traction assumes (docs/physics.md §8.3). Below, the pressure of
-/// the light, nearly rigid contact is lower and wider than Hertz's.
+/// to Hertz's (docs/physics.md §8.3). Below, the pressure of the light, nearly rigid contact is
+/// lower and wider than Hertz's, which the core's widening of the pressure zone approximates.
 const MIN_ELASTIC_MOES_M: f64 = 10.0;
 
 #[test]
 fn core_viscous_friction_matches_the_integrated_eyring_shear() {
     let eyring_stress_pa = 5.0e6_f32;
     let slide_to_roll = 0.01_f32;
-    let contacts = domain_contacts(60);
+    let contacts = domain_contacts(1, 60);
     assert_eq!(contacts.len(), 60);
-    let opts = SolverOptions {
-        viscosity: ViscosityLaw::Barus,
-        ..SolverOptions::default()
-    };
+    let opts = barus();
     // Smooth surfaces (σ = 1 nm): no asperity contact, the film carries the whole load.
     let friction = FrictionDesign {
         composite_roughness_m: 1.0e-9,
@@ -92,16 +91,10 @@ fn core_viscous_friction_matches_the_integrated_eyring_shear() {
     .params()
     .unwrap();
     let (mut isothermal_err, mut step_err) = (Vec::new(), Vec::new());
+    // (core/reference − 1, M, L) of the isothermal traction, to list the largest.
+    let mut signed = Vec::new();
     for c in &contacts {
-        let case = ContactCase::new(
-            f64::from(c.load_n / c.length_m),
-            f64::from(c.entrainment_speed_m_s),
-            f64::from(c.reduced_radius_m),
-            f64::from(c.reduced_modulus_pa),
-            f64::from(c.pressure_viscosity_pa_inv),
-            f64::from(c.viscosity_pa_s),
-        )
-        .unwrap();
+        let case = case_of(c);
         let sol = bearing_ehl::solve(&case, &opts).unwrap();
         let sliding = f64::from(slide_to_roll * c.entrainment_speed_m_s);
         let reference = eyring_traction_n(
@@ -113,19 +106,31 @@ fn core_viscous_friction_matches_the_integrated_eyring_shear() {
         );
         let film = sol.central_film_m as f32;
         let b = sol.hertz_half_width_m as f32;
+        let peak = sol.hertz_pressure_pa as f32;
+        let widening = pressure_zone_widening(
+            film,
+            c.reduced_radius_m,
+            b,
+            c.pressure_viscosity_pa_inv * peak,
+        );
         let core = isothermal_eyring_n(
             eyring_stress_pa,
             c.viscosity_pa_s,
             c.pressure_viscosity_pa_inv,
             sliding as f32,
             film,
-            sol.hertz_pressure_pa as f32,
-            b,
+            peak / widening,
+            b * widening,
             c.length_m,
         );
         let step = friction.contact(c, film).viscous_n;
         let elastic = case.moes_m() >= MIN_ELASTIC_MOES_M;
         isothermal_err.push((elastic, (f64::from(core) / reference - 1.0).abs()));
+        signed.push((
+            f64::from(core) / reference - 1.0,
+            case.moes_m(),
+            case.moes_l(),
+        ));
         step_err.push((elastic, (f64::from(step) / reference - 1.0).abs()));
     }
     let all = |v: &[(bool, f64)]| v.iter().map(|&(_, e)| e).collect::<Vec<_>>();
@@ -136,6 +141,15 @@ fn core_viscous_friction_matches_the_integrated_eyring_shear() {
             .collect::<Vec<_>>()
     };
     let elastic_count = ehl(&isothermal_err).len();
+    signed.sort_by(|a, b| b.0.abs().total_cmp(&a.0.abs()));
+    let above = signed.iter().filter(|e| e.0.abs() > 0.10).count();
+    println!(
+        "isothermal Eyring: {above} of {} contacts off by more than 10 %; the largest:",
+        signed.len()
+    );
+    for (error, m, l) in signed.iter().take(above.min(10)) {
+        println!("  M {m:7.3}  L {l:6.2}: {:+6.1} %", error * 100.0);
+    }
     for (what, errors) in [
         ("isothermal Eyring", &isothermal_err),
         (
@@ -159,8 +173,99 @@ fn core_viscous_friction_matches_the_integrated_eyring_shear() {
     let (median, p95) = median_p95(ehl(&isothermal_err));
     assert!(elastic_count >= 30, "{elastic_count}");
     assert!(median < 0.10 && p95 < 0.10, "median {median}, p95 {p95}");
-    // ...and over the whole domain the median (its light-load end, M < 10, is far off:
-    // docs/friction.md).
-    let (median, _) = median_p95(all(&isothermal_err));
-    assert!(median < 0.10, "median {median}");
+    // ...and over the whole domain, light-load end included (docs/friction.md: the widened
+    // pressure zone brings it within 10 % at the median, not yet at the 95th percentile).
+    let (median, p95) = median_p95(all(&isothermal_err));
+    assert!(median < 0.10 && p95 < 0.35, "median {median}, p95 {p95}");
+}
+
+/// The EHL case of a contact.
+fn case_of(c: &ContactInput) -> ContactCase {
+    ContactCase::new(
+        f64::from(c.load_n / c.length_m),
+        f64::from(c.entrainment_speed_m_s),
+        f64::from(c.reduced_radius_m),
+        f64::from(c.reduced_modulus_pa),
+        f64::from(c.pressure_viscosity_pa_inv),
+        f64::from(c.viscosity_pa_s),
+    )
+    .unwrap()
+}
+
+/// The solver options of both the test and the fit: Barus viscosity, as the core's.
+fn barus() -> SolverOptions {
+    SolverOptions {
+        viscosity: ViscosityLaw::Barus,
+        ..SolverOptions::default()
+    }
+}
+
+/// Regenerates the pressure-zone widening of the core (`WIDENING_COEFFICIENT` and the blend
+/// exponent of `pressure_zone_widening`): 240 contacts of the network's domain from index
+/// 3000 of the Halton sequence (disjoint from the 60 the test above reports), each solved
+/// once and its Eyring traction integrated at slide-to-roll ratios 0.3, 1, 3 and 10 %; prints
+/// the 95th percentile and median of |core/reference − 1| for each (c, exponent) of a grid,
+/// best first. ≈ 1 min.
+#[test]
+#[ignore = "regenerates fitted constants; run by hand"]
+fn fit_pressure_zone_widening() {
+    let eyring_stress_pa = 5.0e6_f32;
+    let opts = barus();
+    // Per (contact, slide-to-roll ratio): film, R, b, p_h, the inputs and the reference.
+    let mut samples = Vec::new();
+    for c in domain_contacts(3000, 240) {
+        let sol = bearing_ehl::solve(&case_of(&c), &opts).unwrap();
+        for slide_to_roll in [0.003_f32, 0.01, 0.03, 0.1] {
+            let sliding = slide_to_roll * c.entrainment_speed_m_s;
+            let reference = eyring_traction_n(
+                &sol,
+                ViscosityLaw::Barus,
+                f64::from(c.length_m),
+                f64::from(sliding),
+                f64::from(eyring_stress_pa),
+            );
+            samples.push((
+                c,
+                sol.central_film_m as f32,
+                sol.hertz_half_width_m as f32,
+                sol.hertz_pressure_pa as f32,
+                sliding,
+                reference,
+            ));
+        }
+    }
+    let mut results = Vec::new();
+    for exponent in [4.0_f32, 8.0] {
+        for coefficient in [1.0_f32, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0] {
+            let errors: Vec<f64> = samples
+                .iter()
+                .map(|&(c, film, b, peak, sliding, reference)| {
+                    let alpha_peak = (c.pressure_viscosity_pa_inv * peak).max(1.0);
+                    let r_sq = coefficient * c.reduced_radius_m * film / (b * b * alpha_peak);
+                    let widening = (1.0 + r_sq.powf(exponent / 2.0)).powf(1.0 / exponent);
+                    let core = isothermal_eyring_n(
+                        eyring_stress_pa,
+                        c.viscosity_pa_s,
+                        c.pressure_viscosity_pa_inv,
+                        sliding,
+                        film,
+                        peak / widening,
+                        b * widening,
+                        c.length_m,
+                    );
+                    (f64::from(core) / reference - 1.0).abs()
+                })
+                .collect();
+            let (median, p95) = median_p95(errors);
+            results.push((p95, median, coefficient, exponent));
+        }
+    }
+    results.sort_by(|a, b| a.0.total_cmp(&b.0));
+    for (p95, median, coefficient, exponent) in results {
+        println!(
+            "c {coefficient:5.1}  exponent {exponent}: p95 {:6.2} %, median {:5.2} %",
+            p95 * 100.0,
+            median * 100.0
+        );
+    }
 }

@@ -176,22 +176,33 @@ impl Prepared {
         let mean_pressure = film_load / area;
         let boundary =
             p.boundary_shear_strength_pa * real_area + p.boundary_friction_coefficient * asperity;
+        // The film's pressure zone: Hertz's, widened at light load (b_eff/b, same load).
+        let peak_pressure = (4.0 / core::f32::consts::PI) * mean_pressure;
+        let widening = traction::pressure_zone_widening(
+            h,
+            r,
+            b,
+            input.pressure_viscosity_pa_inv * peak_pressure,
+        );
         let isothermal = traction::isothermal_eyring_n(
             p.eyring_stress_pa,
             input.viscosity_pa_s,
             input.pressure_viscosity_pa_inv,
             self.sliding_speed_m_s,
             h,
-            (4.0 / core::f32::consts::PI) * mean_pressure,
-            b,
+            peak_pressure / widening,
+            b * widening,
             l,
         );
+        // Evans & Johnson's α·p̄/2 is the mean of ln η over the contact: over the same
+        // (widened) zone, with its mean pressure p̄·b/b_eff.
         let thermal = area
+            * widening
             * traction::evans_johnson_stress_pa(
                 &self.thermal,
                 input.viscosity_pa_s,
                 input.pressure_viscosity_pa_inv,
-                mean_pressure,
+                mean_pressure / widening,
                 h,
                 r,
                 e,

@@ -140,6 +140,30 @@ fn isothermal_eyring_quadrature_matches_fine_integration() {
     assert!(worst < 0.04, "worst {worst}");
 }
 
+/// The pressure zone is Hertz's for an elastohydrodynamic contact, the blend's rigid width
+/// b_r = √(c·R·h/max(α·p_h, 1)) for a nearly rigid one, and stays finite as the load vanishes.
+#[test]
+fn pressure_zone_widens_only_at_light_load() {
+    let (r, h) = (0.01_f32, 0.5e-6_f32);
+    // EHL: b = 200 µm, α·p_h = 30: b_r² = 5·R·h/30 ≪ b², so b_eff = b (to f32).
+    let ehl = traction::pressure_zone_widening(h, r, 200.0e-6, 30.0);
+    assert!((ehl - 1.0).abs() < 1.0e-6, "{ehl}");
+    // Rigid: b = 5 µm, α·p_h = 2: b_r = √(5·R·h/2) = 112 µm, and b_eff = (b⁸ + b_r⁸)^{1/8}.
+    let b = 5.0e-6_f32;
+    let rigid = traction::pressure_zone_widening(h, r, b, 2.0);
+    let b_r = (traction::WIDENING_COEFFICIENT * r * h / 2.0).sqrt();
+    let expected = (b.powi(8) + b_r.powi(8)).powf(0.125) / b;
+    assert!(
+        (rigid / expected - 1.0).abs() < 1.0e-5,
+        "{rigid} {expected}"
+    );
+    // Light load (b = 1 µm, α·p_h → 0): b_eff tends to √(c·R·h), not to infinity.
+    let tiny = 1.0e-6_f32;
+    let width = tiny * traction::pressure_zone_widening(h, r, tiny, 1.0e-6);
+    let limit = (traction::WIDENING_COEFFICIENT * r * h).sqrt();
+    assert!((width / limit - 1.0).abs() < 1.0e-4, "{width} {limit}");
+}
+
 #[test]
 fn thermal_traction_caps_the_isothermal_one_at_high_slide() {
     let input = nu205_inner(250.0, 1500.0);

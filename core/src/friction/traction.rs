@@ -65,6 +65,49 @@ pub fn isothermal_eyring_n(
     2.0 * half_width_m * length_m * eyring_stress_pa * mean
 }
 
+/// Coefficient c of the pressure-zone widening ([`pressure_zone_widening`]): the zone's
+/// rigid half-width is b_r with b_r² = c·R·h/(α·p_h), blended with Hertz's b as
+/// b_eff = (b⁸ + b_r⁸)^{1/8} (b_eff = b to 10⁻³ where b_r < 0.4·b, b_r where b_r > 2.5·b).
+/// c and the exponent 8 are fitted to the isothermal Eyring traction integrated over the
+/// numerical solver's pressure and film (`bearing_ehl::traction`) for 240 contacts of the
+/// network's domain at slide-to-roll ratios 0.3–10 %, none of them among the contacts the
+/// accuracy test reports:
+/// `cargo test --release -p bearing-tests --test friction_eyring -- --ignored --nocapture`
+/// (docs/physics.md §8.3).
+pub const WIDENING_COEFFICIENT: f32 = 5.0;
+
+/// Floor on α·p_h in the widening: below it (the fit's contacts reach down to ≈ 1.9) the
+/// contact is iso-viscous and its zone the rigid inlet's, b_r = √(c·R·h), which stays finite as
+/// the load vanishes.
+const MIN_ALPHA_PEAK_PRESSURE: f32 = 1.0;
+
+/// b_eff/b ≥ 1: how much wider than Hertz's the pressure zone of a line contact is, from its
+/// central film `film_m` h, reduced radius R, Hertz half-width b and α·p_h. An
+/// elastohydrodynamic contact's pressure is Hertz's; a nearly rigid (light, fast, thick-film)
+/// contact spreads its load over its hydrodynamic inlet, whose length scale is √(R·h)
+/// (docs/physics.md §8.3), and its peak pressure is far below p_h. With the load kept,
+/// p_eff·b_eff = p_h·b, the Barus viscosity e^{α·p_eff} then falls as the traction of the
+/// numerical solution does. b_r² = c·R·h/(α·p_h) (`WIDENING_COEFFICIENT`): the rigid inlet
+/// scale, narrowed where the pressure–viscosity effect (α·p_h ≥ 1) concentrates the pressure.
+pub fn pressure_zone_widening(
+    film_m: f32,
+    reduced_radius_m: f32,
+    half_width_m: f32,
+    alpha_peak_pressure: f32,
+) -> f32 {
+    let ratio_sq = WIDENING_COEFFICIENT * reduced_radius_m * film_m
+        / max(
+            half_width_m * half_width_m * max(alpha_peak_pressure, MIN_ALPHA_PEAK_PRESSURE),
+            f32::MIN_POSITIVE,
+        );
+    // (1 + r⁸)^{1/8} with r² = ratio_sq (capped so that r⁸ stays finite in f32).
+    let r4 = {
+        let r2 = min(ratio_sq, 1.0e9);
+        r2 * r2
+    };
+    sqrt(sqrt(sqrt(1.0 + r4 * r4)))
+}
+
 /// What the thermal (Evans–Johnson) traction needs besides the contact.
 #[derive(Clone, Copy, Debug)]
 pub struct Thermal {
