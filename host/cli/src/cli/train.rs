@@ -2,22 +2,23 @@
 //! line contacts, or `--contact point` on a point-contact dataset), run the architecture sweep (`bearing train sweep`), or measure the compiled core models on a
 //! model's test set (`bearing train evaluate`).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 use bearing_core::film::{ann, FilmModel, FilmSource};
 use bearing_ehl::point::PointContactCase;
 use bearing_host_common::output::{write_with, OutputFiles};
 use bearing_train::ann::export::fingerprint;
-use bearing_train::ann::features::{InputSet, TargetForm};
+use bearing_train::ann::features::{FilmCase, InputSet, TargetForm};
 use bearing_train::ann::metrics::Metrics;
 use bearing_train::ann::mlp::Activation;
-use bearing_train::ann::model::{CoreReport, ModelFile};
+use bearing_train::ann::model::{CoreReport, ModelFile, TestReport};
 use bearing_train::ann::pipeline::{
     load_contact_samples, load_samples, split_samples, train_model,
 };
 use bearing_train::ann::sweep::{heading, markdown, run_sweep, SweepConfig};
-use bearing_train::ann::train::{Solver, TrainOptions};
+use bearing_train::ann::train::{Solver, TrainOptions, Trained};
+use bearing_train::dataset::{ContactCase, DatasetContact};
 use clap::{Args, Subcommand};
 
 use super::dataset::ContactKind;
@@ -83,8 +84,8 @@ impl Common {
             bail!("--reg must be a finite number in [0, 1], got {}", self.reg);
         }
         let allowed = match contact {
-            ContactKind::Line => [InputSet::Wug, InputSet::WugEtaModulus],
-            ContactKind::Point => [InputSet::MlkGEtaModulus, InputSet::Mlk],
+            ContactKind::Line => <ContactCase as FilmCase>::INPUT_SETS,
+            ContactKind::Point => <PointContactCase as FilmCase>::INPUT_SETS,
         };
         let inputs = self.inputs.unwrap_or(allowed[0]);
         if !allowed.contains(&inputs) {
@@ -232,27 +233,18 @@ fn train_one(args: TrainOne) -> Result<()> {
         bail!("--weight-bits must be 8 or 16, got {}", args.weight_bits);
     }
     let command = std::env::args().collect::<Vec<_>>().join(" ");
-    let file = data_path.display().to_string();
-    let (trained, test) = match args.contact {
-        ContactKind::Line => {
-            let (data, samples) = load_samples(&data_path)?;
-            eprintln!("training {} on {} solved cases …", args.arch, samples.len());
-            let model = train_model(&file, &data, &samples, &options, args.weight_bits, command)?;
-            write_with(&out, |temp| model.save(temp))?;
-            (model.trained, model.test)
-        }
-        ContactKind::Point => {
-            let (data, samples) = load_contact_samples::<PointContactCase>(&data_path)?;
-            eprintln!(
-                "training {} on {} solved point contacts …",
-                args.arch,
-                samples.len()
-            );
-            let model = train_model(&file, &data, &samples, &options, args.weight_bits, command)?;
-            write_with(&out, |temp| model.save(temp))?;
-            (model.trained, model.test)
-        }
+    let train_contact = match args.contact {
+        ContactKind::Line => train_and_save::<ContactCase>,
+        ContactKind::Point => train_and_save::<PointContactCase>,
     };
+    let (trained, test) = train_contact(
+        &data_path,
+        &out,
+        &args.arch,
+        &options,
+        args.weight_bits,
+        command,
+    )?;
     if args.json {
         println!("{}", serde_json::to_string_pretty(&test)?);
     } else {
@@ -280,6 +272,24 @@ fn train_one(args: TrainOne) -> Result<()> {
         print_metrics(regression, &test.regression);
     }
     Ok(())
+}
+
+/// Load the solved contacts `C` of `data_path`, train, quantise and measure, and write the
+/// model to `out`: the network and its test-set report.
+fn train_and_save<C: DatasetContact + FilmCase>(
+    data_path: &Path,
+    out: &Path,
+    arch: &str,
+    options: &TrainOptions,
+    weight_bits: u32,
+    command: String,
+) -> Result<(Trained, TestReport)> {
+    let (data, samples) = load_contact_samples::<C>(data_path)?;
+    eprintln!("training {arch} on {} solved cases …", samples.len());
+    let file = data_path.display().to_string();
+    let model = train_model(&file, &data, &samples, options, weight_bits, command)?;
+    write_with(out, |temp| model.save(temp))?;
+    Ok((model.trained, model.test))
 }
 
 fn sweep(args: SweepArgs) -> Result<()> {

@@ -32,7 +32,7 @@ use crate::dataset::ContactCase;
 /// A contact a film network is trained on: its features, its regression films (the
 /// log-ratio target's reference) and its length scale (the log-h/R target's).
 pub trait FilmCase: Clone + Send + Sync {
-    /// The input sets of this contact.
+    /// The input sets of this contact, the default (`bearing train`'s) first.
     const INPUT_SETS: &'static [InputSet];
     /// The features of `set`; `set.len()` NaNs for a set of the other contact (which
     /// [`crate::ann::pipeline::train_model`] refuses before training).
@@ -72,7 +72,7 @@ impl FilmCase for ContactCase {
 }
 
 impl FilmCase for PointContactCase {
-    const INPUT_SETS: &'static [InputSet] = &[InputSet::Mlk, InputSet::MlkGEtaModulus];
+    const INPUT_SETS: &'static [InputSet] = &[InputSet::MlkGEtaModulus, InputSet::Mlk];
 
     fn features(&self, set: InputSet) -> Vec<f64> {
         let mlk = [
