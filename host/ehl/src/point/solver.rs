@@ -33,8 +33,16 @@ pub struct PointSolverOptions {
     pub viscosity: ViscosityLaw,
     /// Dowson–Higginson density (true) or incompressible.
     pub compressible: bool,
-    /// Nodes per direction on the finest level (2ⁿ + 1, 17 ..= 513).
+    /// Nodes per direction on the finest level (2ⁿ + 1, 17 ..= 513); across the rolling
+    /// direction (Y) always, along it (X) unless `rolling_nodes` is set.
     pub nodes: usize,
+    /// Nodes along the rolling direction X on the finest level (2ⁿ + 1, from `nodes` to
+    /// 4·(nodes − 1) + 1 and at most 1025), None for `nodes`. A film that varies faster along X
+    /// than across it — high M, and elliptical contacts, whose transverse flow is scaled by
+    /// k⁻² — is resolved by a finer X spacing at less cost than a finer square grid
+    /// (docs/point_contact.md).
+    #[serde(default)]
+    pub rolling_nodes: Option<usize>,
     /// Elastic deflection on (false: rigid surfaces, for limit studies).
     pub elastic: bool,
     /// Inlet end of the domain, X = x/b.
@@ -62,6 +70,7 @@ impl Default for PointSolverOptions {
             viscosity: ViscosityLaw::Roelands,
             compressible: true,
             nodes: DEFAULT_POINT_NODES,
+            rolling_nodes: None,
             elastic: true,
             x_start: -4.5,
             x_end: 1.5,
@@ -85,6 +94,15 @@ impl PointSolverOptions {
         let intervals = self.nodes.wrapping_sub(1);
         if !(17..=513).contains(&self.nodes) || !intervals.is_power_of_two() {
             return bad("nodes", "must be 2^n + 1 in 17..=513");
+        }
+        if let Some(nx) = self.rolling_nodes {
+            let fits = nx >= self.nodes && nx <= 1025 && (nx - 1) <= 4 * intervals;
+            if !(fits && (nx - 1).is_power_of_two()) {
+                return bad(
+                    "rolling_nodes",
+                    "must be 2^n + 1, from nodes to 4 (nodes - 1) + 1, at most 1025",
+                );
+            }
         }
         // X = 0 and Y = 0 must be nodes on every level of the sequence.
         let on_grid = |start: f64, end: f64| {
@@ -148,7 +166,7 @@ pub fn solve_point(
     };
     let film_scale = b * b / rx;
     let deflection_scale = 2.0 * ph * rx / (PI * case.reduced_modulus_pa * b);
-    let counts = level_sizes(opts.nodes, opts.nodes);
+    let counts = level_sizes(opts.rolling_nodes.unwrap_or(opts.nodes), opts.nodes);
     let domain = (opts.x_start, opts.x_end, opts.y_half);
     let mut previous: Option<Level> = None;
     let mut films: Vec<(f64, f64)> = Vec::new();
@@ -182,18 +200,27 @@ pub fn solve_point(
     ))
 }
 
-/// Grid sizes (nodes along X, across), coarsest first: the finest (nx, ny) and the grids of
-/// half the intervals below it, down to [`COARSEST_NODES`] across or [`MAX_LEVELS`] levels,
-/// whichever comes first. Halving both directions keeps the Richardson factor 4 of a
-/// second-order scheme; the level limit keeps the coarsest spacing within 4× of the finest,
-/// so that a large domain whose film the finest grid resolves is not started on a grid too
-/// coarse to carry the load with a positive film (measured: a rigid iso-viscous case on
-/// X ∈ [−18, 6] at 257² fails to converge from 33²).
+/// Grid sizes (nodes along X, across), coarsest first: the finest (nx, ny) and the grids
+/// below it, each with half the X intervals while nx > ny and half of both once the grid is
+/// square, down to [`COARSEST_NODES`] across or [`MAX_LEVELS`] levels, whichever comes
+/// first. Either way the two finest levels differ by a halving (of ΔX alone on a grid finer
+/// along X), so the Richardson factor 4 of the second-order scheme holds for the refined
+/// direction; halving ΔY too on a rectangular grid would put a grid too coarse across on the
+/// level below (measured at k = 8, M = 2000: h_min on 129 × 65 nodes is 7 % off the 257 × 129
+/// value, which spoils its extrapolation, docs/point_contact.md). The level limit keeps the
+/// coarsest spacing within 4× of the finest, so that a large domain whose film the finest grid
+/// resolves is not started on a grid too coarse to carry the load with a positive film
+/// (measured: a rigid iso-viscous case on X ∈ [−18, 6] at 257² fails to converge from 33²).
 fn level_sizes(nx: usize, ny: usize) -> Vec<(usize, usize)> {
     let mut counts = vec![(nx, ny)];
     while counts.len() < MAX_LEVELS && counts[counts.len() - 1].1 > COARSEST_NODES {
         let (x, y) = counts[counts.len() - 1];
-        counts.push(((x - 1) / 2 + 1, (y - 1) / 2 + 1));
+        let half = |n: usize| (n - 1) / 2 + 1;
+        counts.push(if x > y {
+            (half(x), y)
+        } else {
+            (half(x), half(y))
+        });
     }
     counts.reverse();
     counts
@@ -239,18 +266,20 @@ fn centre_index(level: &Level) -> usize {
     (level.ny / 2) * level.nx + i
 }
 
-/// Bilinear interpolation of P (and H₀) from the level with half the intervals.
+/// Bilinear interpolation of P (and H₀) from the level below, which has half the intervals
+/// along X and half or the same number across.
 fn interpolate(coarse: &Level, fine: &mut Level) {
     let (cn, fnx) = (coarse.nx, fine.nx);
+    let across = (fine.ny - 1) / (coarse.ny - 1);
     for j in 0..fine.ny {
+        let (cj, rj) = (j / across, j % across);
         for i in 0..fnx {
-            let (ci, cj) = (i / 2, j / 2);
-            let (ri, rj) = (i % 2, j % 2);
+            let (ci, ri) = (i / 2, i % 2);
             let at = |a: usize, b: usize| coarse.p[(cj + b) * cn + ci + a];
             fine.p[j * fnx + i] = match (ri, rj) {
                 (0, 0) => at(0, 0),
                 (1, 0) => 0.5 * (at(0, 0) + at(1, 0)),
-                (0, 1) => 0.5 * (at(0, 0) + at(0, 1)),
+                (0, _) => 0.5 * (at(0, 0) + at(0, 1)),
                 _ => 0.25 * (at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1)),
             };
         }
