@@ -21,8 +21,8 @@
 //!   M ≤ 1000 for k = 6, and unresolved at M = 300, k = 1 and M = 1000, k = 3; above 100·k the
 //!   dataset solver's 257 × 129 grid resolves h_c and h_min (raw within 1–2.3 % of 513 × 129,
 //!   the Richardson value within 0.6 %, and the raw h_min within 0.1 % of 257²'s) at M = 1400,
-//!   k = 5.8 and M = 2000, k = 8 — but not h_min at lower k, where 129 nodes across leave 2.2 %
-//!   (k = 5, M = 1250), 3.6 % (k = 3, M = 520) and 3 % (k = 2, M = 280) against 257², so the
+//!   k = 5.8 and M = 2000, k = 8 — but not h_min at lower k, where 129 nodes across leave 2.3 %
+//!   (k = 5, M = 1250), 3.7 % (k = 3, M = 520) and 3.2 % (k = 2, M = 280) against 257², so the
 //!   window widens only from k = 5.8. 20 is the smallest M measured.
 //! - L 4–15: the measured L are 4, 6, 10, 12 and 15 (the corners of docs/point_contact.md's
 //!   "Dataset"), and the per-row grid-error estimate of the dataset checks every case.
