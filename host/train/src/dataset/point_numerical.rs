@@ -126,9 +126,10 @@ mod tests {
         assert!(solve(&heavy, &options).is_err());
     }
 
-    /// Solve a 40-case plan over the default point domain at 129² in parallel and print the wall
-    /// time, the cases per minute and every refusal; every case of the domain should be
-    /// accepted (the domain is chosen where the 129² solve resolves the film). Measurement, run
+    /// Solve a 40-case plan over the default point domain in parallel (on the grids of
+    /// [`options_for`]) and print the wall time, the cases per minute and every refusal; every
+    /// case of the domain should be accepted (the domain is chosen where those grids resolve the
+    /// film). Measurement, run
     /// with `cargo test --release -p bearing-train point_domain_sample -- --ignored --nocapture`.
     #[test]
     #[ignore]
