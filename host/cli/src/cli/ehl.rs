@@ -81,6 +81,11 @@ struct CaseArgs {
     /// 2^n + 1 in 17..=513, default 129).
     #[arg(long)]
     nodes: Option<usize>,
+    /// Point contact: nodes along the rolling direction X (2^n + 1, from --nodes to
+    /// 4 (nodes - 1) + 1, at most 1025; default --nodes), e.g. 257 with --nodes 129 for
+    /// high-M elliptical contacts (docs/point_contact.md).
+    #[arg(long)]
+    rolling_nodes: Option<usize>,
     /// Point contact: reduced radius across the rolling direction R_y in m (R_y/R_x in [1, 40]).
     #[arg(long)]
     radius_y: Option<f64>,
@@ -155,8 +160,8 @@ impl CaseArgs {
     }
 
     fn case(&self) -> Result<ContactCase> {
-        if self.radius_y.is_some() || self.ellipticity.is_some() {
-            bail!("--radius-y and --ellipticity are point-contact flags: use `bearing ehl solve --contact point`");
+        if self.radius_y.is_some() || self.ellipticity.is_some() || self.rolling_nodes.is_some() {
+            bail!("--radius-y, --ellipticity and --rolling-nodes are point-contact flags: use `bearing ehl solve --contact point`");
         }
         let si = [
             ("--load", self.load),

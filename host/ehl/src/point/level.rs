@@ -55,9 +55,9 @@ pub(super) const EXACT_JACOBIAN_NODES: usize = 17;
 /// Window of the preconditioning Jacobian: column offsets (di, dj) of a row. Grids above
 /// [`EXACT_JACOBIAN_NODES`] keep the deflection coupling within ±2 nodes along X and ±1 along Y
 /// (the choice measured in the module docs).
-fn window(n: usize) -> Vec<(isize, isize)> {
-    let (a, b) = if n <= EXACT_JACOBIAN_NODES {
-        (n as isize, n as isize)
+fn window(nx: usize, ny: usize) -> Vec<(isize, isize)> {
+    let (a, b) = if nx.max(ny) <= EXACT_JACOBIAN_NODES {
+        (nx as isize, ny as isize)
     } else {
         (2, 1)
     };
@@ -136,7 +136,7 @@ impl Level {
         let (ix, iy) = (nx - 2, ny - 2);
         let unknowns = ix * iy;
         // Pattern: (column, row, row·12 + slot), sorted column-major.
-        let window = window(nx);
+        let window = window(nx, ny);
         let centre_slot = window.iter().position(|&o| o == (0, 0)).unwrap_or(0);
         let mut entries = Vec::with_capacity(unknowns * window.len());
         for row in 0..unknowns {

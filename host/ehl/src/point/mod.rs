@@ -13,8 +13,9 @@
 //! Method ([`solver`], `level`, `linearised`, `gmres`): Newton on the pressures and H₀
 //! together (the load balance is the last equation), with the Reynolds cavitation condition by
 //! a primal–dual active set, a Hertz start with H₀ set from the Nijenbanning–Venner–Moes film,
-//! and grid sequencing 33² → 65² → 129² (each level started from the bilinear interpolation of
-//! the one below). Each Newton system is solved by GMRES with the exact Jacobian applied
+//! and grid sequencing 33² → 65² → 129² (at most three levels, each started from the bilinear
+//! interpolation of the one below; a grid finer along X, e.g. 257 × 129, is reached by halving
+//! ΔX alone, `solver::level_sizes`). Each Newton system is solved by GMRES with the exact Jacobian applied
 //! matrix-free (its deflection part by FFT) and preconditioned by the sparse LU (faer) of the
 //! semi-system Jacobian, which keeps the deflection coupling within ±2 × ±1 nodes; the step is
 //! relaxed only where the correction grows. h_c and h_min are reported Richardson-extrapolated
@@ -71,7 +72,8 @@ pub struct PointSolution {
     /// Whether h_c and h_min are extrapolated (f + (f − f_½)/3, formal order 2).
     pub richardson: bool,
     /// Estimated relative error of the raw h_c and h_min, |f − f_½|/(3f), from the level
-    /// below (None with a single level).
+    /// below (None with a single level); on a grid finer along X than across, the level below
+    /// has half the X intervals only, and this is the error of the X spacing.
     pub grid_error_estimate: Option<(f64, f64)>,
     /// Maximum pressure, Pa.
     pub max_pressure_pa: f64,
@@ -83,7 +85,7 @@ pub struct PointSolution {
     pub pressure_change: f64,
     /// |∫∫P − 2π/3|/(2π/3).
     pub load_error: f64,
-    /// Nodes of the finest grid (per direction squared).
+    /// Nodes of the finest grid (along X times across).
     pub nodes: usize,
     /// Wall time, s.
     pub wall_time_s: f64,

@@ -19,8 +19,11 @@ const KRYLOV_TOLERANCE: f64 = 1e-3;
 /// Smallest relaxation of a Newton step.
 const MIN_RELAXATION: f64 = 0.125;
 
-/// Coarsest grid of the sequence (nodes per direction).
+/// Coarsest grid of the sequence (nodes across the rolling direction).
 const COARSEST_NODES: usize = 33;
+
+/// Most grid levels of the sequence.
+const MAX_LEVELS: usize = 3;
 
 /// Solver options. `Default` is the accuracy setting: Roelands, Dowson–Higginson, elastic,
 /// 129 × 129 nodes at the finest level, X ∈ [−4.5, 1.5], Y ∈ [−3, 3].
@@ -30,8 +33,16 @@ pub struct PointSolverOptions {
     pub viscosity: ViscosityLaw,
     /// Dowson–Higginson density (true) or incompressible.
     pub compressible: bool,
-    /// Nodes per direction on the finest level (2ⁿ + 1, 17 ..= 513).
+    /// Nodes per direction on the finest level (2ⁿ + 1, 17 ..= 513); across the rolling
+    /// direction (Y) always, along it (X) unless `rolling_nodes` is set.
     pub nodes: usize,
+    /// Nodes along the rolling direction X on the finest level (2ⁿ + 1, from `nodes` to
+    /// 4·(nodes − 1) + 1 and at most 1025), None for `nodes`. A film that varies faster along X
+    /// than across it — high M, and elliptical contacts, whose transverse flow is scaled by
+    /// k⁻² — is resolved by a finer X spacing at less cost than a finer square grid
+    /// (docs/point_contact.md).
+    #[serde(default)]
+    pub rolling_nodes: Option<usize>,
     /// Elastic deflection on (false: rigid surfaces, for limit studies).
     pub elastic: bool,
     /// Inlet end of the domain, X = x/b.
@@ -59,6 +70,7 @@ impl Default for PointSolverOptions {
             viscosity: ViscosityLaw::Roelands,
             compressible: true,
             nodes: DEFAULT_POINT_NODES,
+            rolling_nodes: None,
             elastic: true,
             x_start: -4.5,
             x_end: 1.5,
@@ -83,6 +95,15 @@ impl PointSolverOptions {
         if !(17..=513).contains(&self.nodes) || !intervals.is_power_of_two() {
             return bad("nodes", "must be 2^n + 1 in 17..=513");
         }
+        if let Some(nx) = self.rolling_nodes {
+            let fits = nx >= self.nodes && nx <= 1025 && (nx - 1) <= 4 * intervals;
+            if !(fits && (nx - 1).is_power_of_two()) {
+                return bad(
+                    "rolling_nodes",
+                    "must be 2^n + 1, from nodes to 4 (nodes - 1) + 1, at most 1025",
+                );
+            }
+        }
         // X = 0 and Y = 0 must be nodes on every level of the sequence.
         let on_grid = |start: f64, end: f64| {
             let f = -start / (end - start) * 16.0;
@@ -91,16 +112,16 @@ impl PointSolverOptions {
         if !(self.x_start.is_finite()
             && self.x_end.is_finite()
             && (-20.0..=-1.5).contains(&self.x_start)
-            && (1.2..=5.0).contains(&self.x_end)
+            && (1.2..=10.0).contains(&self.x_end)
             && on_grid(self.x_start, self.x_end))
         {
             return bad(
                 "x_start",
-                "x_start in [-20, -1.5], x_end in [1.2, 5], with -x_start/(x_end - x_start) a multiple of 1/16",
+                "x_start in [-20, -1.5], x_end in [1.2, 10], with -x_start/(x_end - x_start) a multiple of 1/16",
             );
         }
-        if !(self.y_half.is_finite() && (1.5..=10.0).contains(&self.y_half)) {
-            return bad("y_half", "must be finite, in [1.5, 10]");
+        if !(self.y_half.is_finite() && (1.5..=20.0).contains(&self.y_half)) {
+            return bad("y_half", "must be finite, in [1.5, 20]");
         }
         crate::check_iteration(
             self.max_iterations,
@@ -145,19 +166,14 @@ pub fn solve_point(
     };
     let film_scale = b * b / rx;
     let deflection_scale = 2.0 * ph * rx / (PI * case.reduced_modulus_pa * b);
-    let mut counts = vec![opts.nodes];
-    while counts[counts.len() - 1] > COARSEST_NODES {
-        let n = counts[counts.len() - 1];
-        counts.push((n - 1) / 2 + 1);
-    }
-    counts.reverse();
+    let counts = level_sizes(opts.rolling_nodes.unwrap_or(opts.nodes), opts.nodes);
     let domain = (opts.x_start, opts.x_end, opts.y_half);
     let mut previous: Option<Level> = None;
     let mut films: Vec<(f64, f64)> = Vec::new();
     let mut iterations = 0;
     let mut report = None;
-    for &n in &counts {
-        let mut level = Level::new(n, n, domain, k, deflection_scale)?;
+    for &(nx, ny) in &counts {
+        let mut level = Level::new(nx, ny, domain, k, deflection_scale)?;
         match &previous {
             Some(coarse) => interpolate(coarse, &mut level),
             None => start_hertz(&mut level, &problem, case, opts, film_scale),
@@ -182,6 +198,32 @@ pub fn solve_point(
         film_scale,
         start.elapsed().as_secs_f64(),
     ))
+}
+
+/// Grid sizes (nodes along X, across), coarsest first: the finest (nx, ny) and the grids
+/// below it, each with half the X intervals while nx > ny and half of both once the grid is
+/// square, down to [`COARSEST_NODES`] across or [`MAX_LEVELS`] levels, whichever comes
+/// first. Either way the two finest levels differ by a halving (of ΔX alone on a grid finer
+/// along X), so the Richardson factor 4 of the second-order scheme holds for the refined
+/// direction; halving ΔY too on a rectangular grid would put a grid too coarse across on the
+/// level below (measured at k = 8, M = 2000: h_min on 129 × 65 nodes is 7 % off the 257 × 129
+/// value, which spoils its extrapolation, docs/point_contact.md). The level limit keeps the
+/// coarsest spacing within 4× of the finest, so that a large domain whose film the finest grid
+/// resolves is not started on a grid too coarse to carry the load with a positive film
+/// (measured: a rigid iso-viscous case on X ∈ [−18, 6] at 257² fails to converge from 33²).
+fn level_sizes(nx: usize, ny: usize) -> Vec<(usize, usize)> {
+    let mut counts = vec![(nx, ny)];
+    while counts.len() < MAX_LEVELS && counts[counts.len() - 1].1 > COARSEST_NODES {
+        let (x, y) = counts[counts.len() - 1];
+        let half = |n: usize| (n - 1) / 2 + 1;
+        counts.push(if x > y {
+            (half(x), y)
+        } else {
+            (half(x), half(y))
+        });
+    }
+    counts.reverse();
+    counts
 }
 
 /// Hertz pressure and H₀ such that the centre film is the Nijenbanning–Venner–Moes estimate
@@ -224,18 +266,20 @@ fn centre_index(level: &Level) -> usize {
     (level.ny / 2) * level.nx + i
 }
 
-/// Bilinear interpolation of P (and H₀) from the level with half the intervals.
+/// Bilinear interpolation of P (and H₀) from the level below, which has half the intervals
+/// along X and half or the same number across.
 fn interpolate(coarse: &Level, fine: &mut Level) {
     let (cn, fnx) = (coarse.nx, fine.nx);
+    let across = (fine.ny - 1) / (coarse.ny - 1);
     for j in 0..fine.ny {
+        let (cj, rj) = (j / across, j % across);
         for i in 0..fnx {
-            let (ci, cj) = (i / 2, j / 2);
-            let (ri, rj) = (i % 2, j % 2);
+            let (ci, ri) = (i / 2, i % 2);
             let at = |a: usize, b: usize| coarse.p[(cj + b) * cn + ci + a];
             fine.p[j * fnx + i] = match (ri, rj) {
                 (0, 0) => at(0, 0),
                 (1, 0) => 0.5 * (at(0, 0) + at(1, 0)),
-                (0, 1) => 0.5 * (at(0, 0) + at(0, 1)),
+                (0, _) => 0.5 * (at(0, 0) + at(0, 1)),
                 _ => 0.25 * (at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1)),
             };
         }

@@ -7,6 +7,14 @@
 //! (one level only, or the two finest grids more than 30 % apart), and a raw grid error above
 //! [`MAX_GRID_ERROR`] — 7.3 % is the largest at which the 129² Richardson value was checked
 //! against a 257² solve (within 0.5 %, docs/point_contact.md).
+//!
+//! Grid: the options' grid where the 129² solve resolves the film (M ≤ 100·k, the measured
+//! window of docs/point_contact.md), and twice the nodes along the rolling direction above it
+//! (257 × 129 for the default 129: raw h_c and h_min within 1–2.3 % of 513 × 129, the
+//! Richardson values within 0.6 %, at k = 5.8, M = 1400 and k = 8, M = 2000;
+//! docs/point_contact.md), unless the options set `rolling_nodes` themselves. The point domain
+//! (`point_domain`) reaches above M = 100·k only from k = 5.8 on, where 129 nodes across
+//! resolve h_min.
 
 use bearing_ehl::point::{solve_point, PointContactCase, PointSolverOptions};
 use serde::{Deserialize, Serialize};
@@ -33,15 +41,33 @@ pub struct PointFilms {
     pub minimum_grid_error: f64,
 }
 
+/// Largest M per unit ellipticity solved on the options' own grid; above it the grid has twice
+/// the intervals along the rolling direction (module doc).
+pub const SQUARE_GRID_M_PER_ELLIPTICITY: f64 = 100.0;
+
+/// The solver options for `case`: `options` with the rolling-direction refinement of the
+/// module doc.
+pub fn options_for(case: &PointContactCase, options: &PointSolverOptions) -> PointSolverOptions {
+    let fine_along_x = options.rolling_nodes.is_none()
+        && case.moes_m() > SQUARE_GRID_M_PER_ELLIPTICITY * case.hertz().ellipticity;
+    PointSolverOptions {
+        rolling_nodes: fine_along_x
+            .then_some(2 * (options.nodes - 1) + 1)
+            .or(options.rolling_nodes),
+        ..*options
+    }
+}
+
 /// Dataset header entry for the point-contact solver with `options`.
 pub fn solver_info(options: &PointSolverOptions) -> SolverInfo {
     SolverInfo {
         name: "point-numerical".into(),
         version: format!(
             "bearing-host {} ehl::point (multigrid Newton, Richardson from the two finest levels, \
-             refusal above {:.1} % grid error)",
+             refusal above {:.1} % grid error, twice the nodes along X above M = {:.0}·k)",
             env!("CARGO_PKG_VERSION"),
-            100.0 * MAX_GRID_ERROR
+            100.0 * MAX_GRID_ERROR,
+            SQUARE_GRID_M_PER_ELLIPTICITY
         ),
         options: serde_json::to_value(options).unwrap_or(serde_json::Value::Null),
     }
@@ -49,7 +75,7 @@ pub fn solver_info(options: &PointSolverOptions) -> SolverInfo {
 
 /// Solve one case with `options`, refusing the cases of the module doc.
 pub fn solve(case: &PointContactCase, options: &PointSolverOptions) -> Result<PointFilms, String> {
-    let s = solve_point(case, options).map_err(|e| e.to_string())?;
+    let s = solve_point(case, &options_for(case, options)).map_err(|e| e.to_string())?;
     let (central_grid_error, minimum_grid_error) = s
         .grid_error_estimate
         .ok_or("refused: a single grid level gives no grid-error estimate")?;
@@ -100,9 +126,10 @@ mod tests {
         assert!(solve(&heavy, &options).is_err());
     }
 
-    /// Solve a 40-case plan over the default point domain at 129² in parallel and print the wall
-    /// time, the cases per minute and every refusal; every case of the domain should be
-    /// accepted (the domain is chosen where the 129² solve resolves the film). Measurement, run
+    /// Solve a 40-case plan over the default point domain in parallel (on the grids of
+    /// [`options_for`]) and print the wall time, the cases per minute and every refusal; every
+    /// case of the domain should be accepted (the domain is chosen where those grids resolve the
+    /// film). Measurement, run
     /// with `cargo test --release -p bearing-train point_domain_sample -- --ignored --nocapture`.
     #[test]
     #[ignore]

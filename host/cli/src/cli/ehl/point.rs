@@ -20,6 +20,7 @@ fn point_flag(field: &str) -> Option<&'static str> {
         "radius_y_m" => "--radius-y",
         "radius_ratio" => "--radius-y / --radius (R_y/R_x)",
         "ellipticity" => "--ellipticity",
+        "rolling_nodes" => "--rolling-nodes",
         _ => return flag_of(field),
     })
 }
@@ -102,6 +103,7 @@ fn options(c: &CaseArgs) -> PointSolverOptions {
         },
         compressible: !c.incompressible,
         nodes: c.nodes.unwrap_or(point::DEFAULT_POINT_NODES),
+        rolling_nodes: c.rolling_nodes,
         ..Default::default()
     }
 }
@@ -162,8 +164,8 @@ pub(super) fn solve(a: &SolveArgs) -> Result<()> {
 
 fn print_solution(s: &PointSolution) {
     let c = &s.case;
-    let side = (s.nodes as f64).sqrt().round() as usize;
-    println!("EHL point contact (isothermal, Newtonian), {side} × {side} nodes");
+    let (along, across) = (s.maps.x.len(), s.maps.y.len());
+    println!("EHL point contact (isothermal, Newtonian), {along} × {across} nodes");
     println!(
         "  W = {:.4e}  U = {:.4e}  G = {:.1}  M = {:.3}  L = {:.3}  k = a/b = {:.4}",
         c.load_parameter(),
