@@ -143,3 +143,24 @@ fn point_film_refusals_name_the_flag() {
     let (ok, _, err) = bearing(&["film", "--ellipticity", "2", "--no-solver"]);
     assert!(!ok && err.contains("point-contact flags"), "{err}");
 }
+
+/// `bearing export` tells a point-contact model from a line-contact one: the committed point
+/// model regenerates the committed `core/src/film/ann/point_model_weights.rs` byte for byte.
+#[test]
+fn export_writes_the_point_model() {
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("point_model_weights.rs");
+    let model = root.join("data/ann/point_numerical_model.json");
+    let (ok, _, err) = bearing(&[
+        "export",
+        "--model",
+        model.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let committed =
+        std::fs::read_to_string(root.join("core/src/film/ann/point_model_weights.rs")).unwrap();
+    assert!(std::fs::read_to_string(&out).unwrap() == committed);
+}
