@@ -6,12 +6,16 @@
 //! counter difference is an instruction count (`bearing-m4-counter`, calibrated on 1000 `nop`).
 //! Counts are instructions, not Cortex-M4 cycles. For each contact — 20 from the committed pipeline dataset,
 //! one out of the domain, one hostile — it prints the counts of `AnnInt::film`, `AnnF32::film` and
-//! of the networks alone; they must be the same for every contact.
+//! of the networks alone; they must be the same for every contact. Then the same for the point
+//! contact's `PointAnnInt::film`, `PointAnnF32::film` (groups, exact ellipticity, guard,
+//! features, network, fallback), their networks alone and `HamrockDowson::film`, on
+//! `POINT_CASES`.
 #![no_std]
 #![no_main]
 
-use bearing_core::film::ann::{prepare, AnnF32, AnnInt};
-use bearing_core::film::{ContactInput, FilmModel};
+use bearing_core::film::ann::{point, prepare, AnnF32, AnnInt, PointAnnF32, PointAnnInt};
+use bearing_core::film::point::HamrockDowson;
+use bearing_core::film::{ContactInput, FilmModel, PointContactInput};
 use bearing_m4_counter as counter;
 use core::hint::black_box;
 use cortex_m_rt::entry;
@@ -224,6 +228,109 @@ static CASES: [ContactInput; 22] = [
     },
 ];
 
+/// A point contact: w, u_m, R_x, R_y, E', α, η₀.
+const fn point(
+    w: f32,
+    u: f32,
+    rx: f32,
+    ry: f32,
+    e: f32,
+    alpha: f32,
+    eta: f32,
+) -> PointContactInput {
+    PointContactInput {
+        load_n: w,
+        entrainment_speed_m_s: u,
+        radius_x_m: rx,
+        radius_y_m: ry,
+        reduced_modulus_pa: e,
+        pressure_viscosity_pa_inv: alpha,
+        viscosity_pa_s: eta,
+    }
+}
+
+/// Point contacts: 8 rows of the committed point dataset, one overloaded (out of the domain,
+/// Hamrock–Dowson's fallback), one at R_y/R_x = 100 (the ellipticity's largest ratio), one
+/// with R_y < R_x and one hostile.
+static POINT_CASES: [PointContactInput; 12] = [
+    point(
+        8.342113,
+        1.725821,
+        0.007341554,
+        0.03552707,
+        227903600000.0,
+        1.973398e-08,
+        0.05317714,
+    ),
+    point(
+        25.45016,
+        4.611199,
+        0.009026295,
+        0.1002697,
+        201414300000.0,
+        1.883035e-08,
+        0.002696857,
+    ),
+    point(
+        7.529031,
+        1.693137,
+        0.00245054,
+        0.01425212,
+        223194400000.0,
+        1.013029e-08,
+        0.03383287,
+    ),
+    point(
+        8.544655,
+        1.673467,
+        0.003094429,
+        0.004567898,
+        230683800000.0,
+        1.289382e-08,
+        0.061993,
+    ),
+    point(
+        15.06446,
+        4.135656,
+        0.005561277,
+        0.03083627,
+        237175800000.0,
+        2.22182e-08,
+        0.002276116,
+    ),
+    point(
+        32.33185,
+        2.335021,
+        0.005806274,
+        0.03762415,
+        245892000000.0,
+        1.411048e-08,
+        0.02901651,
+    ),
+    point(
+        28.60231,
+        5.749712,
+        0.00993613,
+        0.1079223,
+        210335400000.0,
+        1.598601e-08,
+        0.01732441,
+    ),
+    point(
+        35.96807,
+        2.497843,
+        0.007479861,
+        0.05052713,
+        241698900000.0,
+        1.72166e-08,
+        0.02757344,
+    ),
+    point(1e5, 5.0, 4e-3, 4e-2, 2.3e11, 2e-8, 0.04),
+    point(50.0, 5.0, 4e-3, 0.4, 2.3e11, 2e-8, 0.04),
+    point(50.0, 5.0, 4e-3, 2e-3, 2.3e11, 2e-8, 0.04),
+    point(f32::NAN, 0.0, -1.0, f32::INFINITY, 2.3e11, 2e-8, 0.04),
+];
+
 /// Instructions of `f()`, less `empty` (those of the reads themselves).
 fn count<T>(f: impl FnOnce() -> T, empty: u32) -> u32 {
     let s = counter::now();
@@ -256,6 +363,19 @@ fn main() -> ! {
         hprintln!(
             "contact {}: AnnInt::film {} AnnF32::film {} int network {} f32 network {} (source {}, h_c {:e} m)",
             i, int_film, f32_film, int_net, f32_net, f.source as u8, f.central_m
+        );
+    }
+    for (i, c) in POINT_CASES.iter().enumerate() {
+        let p = point::prepare(c);
+        let int_film = count(|| PointAnnInt.film(black_box(c)), empty);
+        let f32_film = count(|| PointAnnF32.film(black_box(c)), empty);
+        let int_net = count(|| PointAnnInt::network(black_box(&p.features)), empty);
+        let f32_net = count(|| PointAnnF32::network(black_box(&p.features)), empty);
+        let hd = count(|| HamrockDowson.film(black_box(c)), empty);
+        let f = PointAnnInt.film(c);
+        hprintln!(
+            "point contact {}: PointAnnInt::film {} PointAnnF32::film {} int network {} f32 network {} HamrockDowson::film {} (source {}, h_c {:e} m)",
+            i, int_film, f32_film, int_net, f32_net, hd, f.source as u8, f.central_m
         );
     }
     debug::exit(if calibration == 1000 {

@@ -1,4 +1,5 @@
-//! Film models: the lubricant film thickness of one roller–race line contact.
+//! Film models: the lubricant film thickness of one roller–race line contact, and of one
+//! ball–race point contact ([`point`]).
 //!
 //! Every model — the regression formulas, the hydrodynamic (Martin) film, and the neural
 //! networks of `film::ann` — answers the same question through [`FilmModel`]: given the
@@ -12,6 +13,24 @@
 
 pub mod ann;
 pub mod corrections;
+pub mod point;
+
+pub use point::PointContactInput;
+
+/// A contact a film model takes: the line contact's [`ContactInput`] or the point contact's
+/// [`PointContactInput`]. The film models' domain tests are bounds on the load once the rest of
+/// the contact is fixed, which [`FilmModel::served_loads`] reports; this is how it sets the load.
+pub trait FilmContact: Copy {
+    /// The same contact carrying `load_n` (N).
+    fn with_load_n(&self, load_n: f32) -> Self;
+}
+
+impl FilmContact for ContactInput {
+    #[inline]
+    fn with_load_n(&self, load_n: f32) -> Self {
+        Self { load_n, ..*self }
+    }
+}
 
 /// Everything the isothermal line-contact film depends on (docs/physics.md §5.3: solid density and
 /// Poisson's ratio do not enter once `E'` is given).
@@ -69,23 +88,26 @@ impl Film {
     };
 }
 
-/// A film thickness model for a loaded line contact.
+/// A film thickness model for a loaded contact of kind `C`: the line contact
+/// ([`ContactInput`], the default) or the point contact ([`PointContactInput`]).
 ///
 /// The film is the *complete* isothermal film of the contact at any load, as the numerical
 /// solver of docs/physics.md §5.2 would give it: elastic–piezoviscous where the contact is loaded,
 /// tending to Martin's rigid iso-viscous film (h₀/R = 4.896U/W) as the load vanishes. The bearing's
 /// film–load coupling relies on that rise at light load for a continuous separation of the
 /// rollers (`bearing::coupling`); a model of the EHL regime alone blends itself with Martin's
-/// film, as [`Regression`] does.
+/// film, as [`Regression`] does. (The point-contact models of [`point`] serve the EHL regime
+/// of Hamrock–Dowson's formulas and their network's training domain; no bearing step relies on
+/// their light-load limit yet.)
 ///
 /// Implementations must be total: for any input (NaN, ∞, negative, huge) they return a finite,
 /// non-negative film — falling back to a regression formula, or to zero, and saying so through
 /// [`Film::source`] — and they must do the same amount of work for every input.
-pub trait FilmModel {
+pub trait FilmModel<C: FilmContact = ContactInput> {
     /// Short stable name, used in reports and JSON (`"regression"`, `"ann_f32"`, `"ann_int"`).
     fn name(&self) -> &'static str;
     /// Central and minimum film of one contact.
-    fn film(&self, contact: &ContactInput) -> Film;
+    fn film(&self, contact: &C) -> Film;
 
     /// The loads at which this model itself serves contacts like `template` (its load is
     /// ignored): an interval of ln Q (N) and the source it reports there. Outside the interval
@@ -93,16 +115,11 @@ pub trait FilmModel {
     /// other inputs are fixed, so the bearing step asks this once per contact kind and step and
     /// flags each roller with two comparisons. The default serves every load and reports the
     /// source of one call.
-    fn served_loads(&self, template: &ContactInput) -> ServedLoads {
+    fn served_loads(&self, template: &C) -> ServedLoads {
         ServedLoads {
             ln_load_min: f32::MIN,
             ln_load_max: f32::MAX,
-            source: self
-                .film(&ContactInput {
-                    load_n: 1000.0,
-                    ..*template
-                })
-                .source,
+            source: self.film(&template.with_load_n(1000.0)).source,
         }
     }
 }

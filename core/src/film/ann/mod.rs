@@ -38,6 +38,13 @@ mod regression;
 #[rustfmt::skip]
 #[allow(clippy::excessive_precision, clippy::unreadable_literal)]
 pub mod model_weights;
+pub mod point;
+#[doc(hidden)]
+#[rustfmt::skip]
+#[allow(clippy::excessive_precision, clippy::unreadable_literal)]
+pub mod point_model_weights;
+
+pub use point::{PointAnnF32, PointAnnInt};
 
 use super::{ContactInput, Film, FilmModel, FilmSource, ServedLoads};
 use model_weights as model;
@@ -106,7 +113,7 @@ const LN_4_896: f32 = 1.588_329_6;
 /// `hi`'s pattern. One unsigned range test instead of two float comparisons (a quarter of
 /// their cost on the M4, where each float compare moves its flags to the core).
 #[inline(always)]
-fn in_positive_range(v: f32, lo: f32, hi: f32) -> bool {
+pub(crate) fn in_positive_range(v: f32, lo: f32, hi: f32) -> bool {
     v.to_bits().wrapping_sub(lo.to_bits()) <= hi.to_bits().wrapping_sub(lo.to_bits())
 }
 

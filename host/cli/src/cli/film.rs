@@ -23,9 +23,24 @@ use bearing_host_common::output::write_with;
 ///
 /// Give the contact in SI units (`--load --length --entrainment --radius --modulus --alpha
 /// --eta0`, E' as docs/physics.md §1 defines it), or a bearing with `--config FILE --speed-rpm RPM
-/// --roller-load N` (both contacts of the roller are shown).
+/// --roller-load N` (both contacts of the roller are shown). `--contact point` takes a ball–race
+/// point contact instead (`--load --entrainment --radius --radius-y | --ellipticity --modulus
+/// --alpha --eta0`, `film_point`).
 #[derive(Args, Debug)]
 pub struct FilmArgs {
+    /// Contact kind: line (roller) or point (ball; give --radius-y or --ellipticity).
+    #[arg(long, value_enum, default_value = "line", conflicts_with = "config")]
+    pub contact: FilmContact,
+    /// Point contact: reduced radius across the rolling direction R_y (m), R_y/R_x in [1, 40].
+    #[arg(long, value_parser = positive)]
+    pub radius_y: Option<f64>,
+    /// Point contact: ellipticity k = a/b in [1, 12] (sets R_y from --radius), instead of
+    /// --radius-y [default: 1].
+    #[arg(long)]
+    pub ellipticity: Option<f64>,
+    /// Point contact: leave the numerical solver out (≈ 1–2 s per contact).
+    #[arg(long)]
+    pub no_solver: bool,
     /// Roller load Q (N).
     #[arg(long, value_parser = positive, conflicts_with = "config")]
     pub load: Option<f64>,
@@ -74,6 +89,15 @@ pub struct FilmArgs {
     pub plot_span: f64,
 }
 
+/// The kind of contact `bearing film` reports.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FilmContact {
+    /// Cylindrical roller: line contact.
+    Line,
+    /// Ball: circular or elliptical point contact (`film_point`).
+    Point,
+}
+
 /// Highest peak Hertz pressure accepted (Pa): 4.0 GPa, the contact stress at which ISO 76
 /// rates the static load of a roller bearing (a permanent deformation of 10⁻⁴ of the roller
 /// diameter). Above it the steel yields and the elastic contact every film model assumes no
@@ -94,7 +118,7 @@ const ALPHA_RANGE_PA_INV: (f64, f64) = (1.0e-9, 1.0e-7);
 
 /// The value of `flag` as the core's f32, or a refusal naming it when single precision cannot
 /// hold it (overflow to infinity or underflow to zero).
-fn single_precision(flag: &str, value: f64) -> anyhow::Result<f32> {
+pub(super) fn single_precision(flag: &str, value: f64) -> anyhow::Result<f32> {
     let v = value as f32;
     if !(v.is_normal() && v > 0.0) {
         bail!(
@@ -401,6 +425,12 @@ fn print_corrections(r: &serde_json::Value) {
 
 /// Run `bearing film`.
 pub fn run(args: FilmArgs) -> anyhow::Result<()> {
+    if args.contact == FilmContact::Point {
+        return super::film_point::run(&args);
+    }
+    if args.radius_y.is_some() || args.ellipticity.is_some() || args.no_solver {
+        bail!("--radius-y, --ellipticity and --no-solver are point-contact flags: use `bearing film --contact point`");
+    }
     if let Some(path) = &args.config {
         let (config, params) = BearingConfig::load(path)?;
         let speed_rpm = args

@@ -9,6 +9,7 @@ mod ehl_trust;
 pub mod export;
 pub mod film;
 mod film_plot;
+mod film_point;
 pub mod fmu;
 pub mod friction;
 pub mod friction_contact;

@@ -111,7 +111,7 @@ struct TrainOne {
     /// Dataset file (`bearing dataset generate`).
     #[arg(long, required = true)]
     data: Option<PathBuf>,
-    /// Contact kind of the dataset (a point-contact model is not exported to the core).
+    /// Contact kind of the dataset (`bearing export` writes either kind into the core).
     #[arg(long, value_enum, default_value = "line")]
     contact: ContactKind,
     /// Hidden layers as `LxN` (e.g. `3x14`) or widths `14-14-10` (1–8 layers of 1–64).

@@ -1,19 +1,86 @@
-//! Code generation: the model file → `core/src/film/ann/model_weights.rs`, const arrays and the
-//! forward functions of the f32 and integer networks, with layer widths as const generics.
+//! Code generation: the model file → `core/src/film/ann/model_weights.rs` (line contact) or
+//! `core/src/film/ann/point_model_weights.rs` (point contact), const arrays and the forward
+//! functions of the f32 and integer networks, with layer widths as const generics. The two
+//! contacts' files differ in their domain limits and feature selection only; the layers are
+//! written by the same code.
 //! The output depends only on the network, its normalisation, quantisation and domain (not on
 //! the metrics), is deterministic, and is compared byte for byte with the committed file by a
 //! test.
 
 use std::fmt::Write;
+use std::path::Path;
 
-use anyhow::{bail, Result};
+use anyhow::{bail, Context, Result};
+use serde::Serialize;
 
 use super::features::{InputSet, TargetForm};
 use super::mlp::Activation;
 use super::model::ModelFile;
+use super::quant::Quantised;
+use super::train::Trained;
+use crate::dataset::point_domain::PointDomain;
 
-/// FNV-1a (64 bit) of the parts of the model the generated code depends on.
+/// Where the line contact's network is generated in the core.
+pub const LINE_WEIGHTS_PATH: &str = "core/src/film/ann/model_weights.rs";
+/// Where the point contact's network is generated in the core.
+pub const POINT_WEIGHTS_PATH: &str = "core/src/film/ann/point_model_weights.rs";
+
+/// A model file of either contact, told apart by its input set.
+pub enum ContactModel {
+    /// A line-contact model (`core::film::ann::AnnF32` / `AnnInt`).
+    Line(ModelFile),
+    /// A point-contact model (`core::film::ann::PointAnnF32` / `PointAnnInt`).
+    Point(ModelFile<PointDomain>),
+}
+
+impl ContactModel {
+    /// Read a model file, as the contact its input set belongs to.
+    pub fn load(path: &Path) -> Result<Self> {
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("reading model {}", path.display()))?;
+        let value: serde_json::Value = serde_json::from_str(&text)
+            .with_context(|| format!("{} is not a film model file", path.display()))?;
+        let inputs = &value["trained"]["options"]["inputs"];
+        let point = matches!(inputs.as_str(), Some("mlk" | "mlk-g-eta-modulus"));
+        Ok(if point {
+            Self::Point(ModelFile::load(path)?)
+        } else {
+            Self::Line(ModelFile::load(path)?)
+        })
+    }
+
+    /// The generated source.
+    pub fn render(&self) -> Result<String> {
+        match self {
+            Self::Line(m) => render(m),
+            Self::Point(m) => render_point(m),
+        }
+    }
+
+    /// The generated file's path in the repository.
+    pub fn default_out(&self) -> &'static str {
+        match self {
+            Self::Line(_) => LINE_WEIGHTS_PATH,
+            Self::Point(_) => POINT_WEIGHTS_PATH,
+        }
+    }
+
+    /// The integer layers (for `bearing export`'s note on the host's requantisation path).
+    pub fn quantised(&self) -> Option<&Quantised> {
+        match self {
+            Self::Line(m) => m.quantised.as_ref(),
+            Self::Point(m) => m.quantised.as_ref(),
+        }
+    }
+}
+
+/// FNV-1a (64 bit) of the parts of a line-contact model the generated code depends on.
 pub fn fingerprint(model: &ModelFile) -> Result<String> {
+    fingerprint_of(model)
+}
+
+/// FNV-1a (64 bit) of the parts of a model of either contact the generated code depends on.
+pub fn fingerprint_of<D: Serialize>(model: &ModelFile<D>) -> Result<String> {
     let text = serde_json::to_string(&(
         &model.trained.net,
         &model.trained.input_norm,
@@ -48,37 +115,32 @@ fn act_name(a: Activation) -> &'static str {
     }
 }
 
-/// Render the generated Rust source.
-pub fn render(model: &ModelFile) -> Result<String> {
-    let t = &model.trained;
+/// The quantised network and the output form's name, or why the model cannot be exported.
+fn exportable<D>(model: &ModelFile<D>) -> Result<(&Quantised, &'static str)> {
     let q = match &model.quantised {
         Some(q) => q,
         None => bail!("the model has no quantised network; train it again (quantisation is part of `bearing train`)"),
     };
-    let target = match t.options.target {
+    let target = match model.trained.options.target {
         TargetForm::LogRatio => "LogRatio",
         TargetForm::LogHr => "LogHr",
         TargetForm::Direct => {
             bail!("a direct-film model cannot be exported: it may predict negative films")
         }
     };
-    let (n_in, select, input_set) = match t.options.inputs {
-        InputSet::Wug => (3, "[f[0], f[1], f[2]]", "Wug"),
-        InputSet::WugEtaModulus => (5, "*f", "WugEtaModulus"),
-        InputSet::Mlk | InputSet::MlkGEtaModulus => {
-            bail!("a point-contact model cannot be exported: the core's film network is the line contact's")
-        }
-    };
-    let mut o = String::new();
+    Ok((q, target))
+}
+
+/// The file's doc header: provenance and shape.
+fn write_header<D>(o: &mut String, model: &ModelFile<D>, n_in: usize, out: &str) -> Result<()> {
+    let t = &model.trained;
     let prov = &model.provenance;
+    let bits = model.quantised.as_ref().map_or(0, |q| q.weight_bits);
     writeln!(
         o,
         "//! GENERATED by `bearing export` — do not edit. Regenerate with"
     )?;
-    writeln!(
-        o,
-        "//! `bearing export --model <model file> --out core/src/film/ann/model_weights.rs`."
-    )?;
+    writeln!(o, "//! `bearing export --model <model file> --out {out}`.")?;
     writeln!(
         o,
         "//! Source: dataset `{}` (seed {}, solver {} {}).",
@@ -96,13 +158,20 @@ pub fn render(model: &ModelFile) -> Result<String> {
         n_in,
         widths.join(" → "),
         t.net.activation.name(),
-        q.weight_bits
+        bits
     )?;
     writeln!(o)?;
-    writeln!(o, "use super::float::{{Activation, DenseF32}};")?;
-    writeln!(o, "use super::int::{{DenseInt, Lut, LutLanes}};")?;
-    writeln!(o, "use super::{{DomainLimits, InputSet, TargetForm}};")?;
-    writeln!(o)?;
+    Ok(())
+}
+
+/// Fingerprint, input set, input count, output form and activation.
+fn write_identity<D: Serialize>(
+    o: &mut String,
+    model: &ModelFile<D>,
+    input_set: &str,
+    n_in: usize,
+    target: &str,
+) -> Result<()> {
     writeln!(
         o,
         "/// Fingerprint of the model parts this file was generated from."
@@ -110,10 +179,10 @@ pub fn render(model: &ModelFile) -> Result<String> {
     writeln!(
         o,
         "pub const MODEL_FINGERPRINT: &str = \"{}\";",
-        fingerprint(model)?
+        fingerprint_of(model)?
     )?;
     writeln!(o, "/// Input set.")?;
-    writeln!(o, "pub const INPUT_SET: InputSet = InputSet::{input_set};")?;
+    writeln!(o, "pub const INPUT_SET: {input_set};")?;
     writeln!(o, "/// Number of network inputs.")?;
     writeln!(o, "pub const N_IN: usize = {n_in};")?;
     writeln!(o, "/// Output form.")?;
@@ -122,42 +191,27 @@ pub fn render(model: &ModelFile) -> Result<String> {
     writeln!(
         o,
         "pub const ACTIVATION: Activation = Activation::{};",
-        act_name(t.net.activation)
+        act_name(model.trained.net.activation)
     )?;
-    let d = &model.domain;
-    let iv = |i: &crate::dataset::domain::Interval| {
-        format!("[{}, {}]", f(i.min * (1.0 - 1e-5)), f(i.max * (1.0 + 1e-5)))
-    };
-    writeln!(o, "/// Training domain (10⁻⁵ relative slack).")?;
-    writeln!(o, "pub const DOMAIN: DomainLimits = DomainLimits {{")?;
-    writeln!(
-        o,
-        "    inputs: [{}, {}, {}, {}, {}, {}, {}],",
-        iv(&d.load_n),
-        iv(&d.entrainment_speed_m_s),
-        iv(&d.reduced_radius_m),
-        iv(&d.reduced_modulus_pa),
-        iv(&d.pressure_viscosity_pa_inv),
-        iv(&d.viscosity_pa_s),
-        iv(&d.length_m)
-    )?;
-    writeln!(
-        o,
-        "    ln_hertz_pressure: [{}, {}],",
-        f((d.hertz_pressure_pa.min * (1.0 - 1e-5)).ln()),
-        f((d.hertz_pressure_pa.max * (1.0 + 1e-5)).ln())
-    )?;
-    writeln!(
-        o,
-        "    piezo_min_log_ratio: {},",
-        f(d.regime.piezo_min_log_ratio - 1e-5)
-    )?;
-    writeln!(
-        o,
-        "    elastic_max_log_ratio: {},",
-        f(d.regime.elastic_max_log_ratio + 1e-5)
-    )?;
-    writeln!(o, "}};")?;
+    Ok(())
+}
+
+/// `[min, max]` of an interval with the 10⁻⁵ relative slack, as f32 literals.
+fn slack_interval(i: &crate::dataset::domain::Interval) -> String {
+    format!("[{}, {}]", f(i.min * (1.0 - 1e-5)), f(i.max * (1.0 + 1e-5)))
+}
+
+/// `[ln min, ln max]` of an interval with the 10⁻⁵ relative slack.
+fn slack_ln_interval(i: &crate::dataset::domain::Interval) -> String {
+    format!(
+        "[{}, {}]",
+        f((i.min * (1.0 - 1e-5)).ln()),
+        f((i.max * (1.0 + 1e-5)).ln())
+    )
+}
+
+/// Feature and target normalisation and the integer output step, then a blank line.
+fn write_normalisation(o: &mut String, t: &Trained, q: &Quantised) -> Result<()> {
     writeln!(
         o,
         "/// Minimum of each feature (normalisation `x = (f − min)·scale − 1`)."
@@ -203,14 +257,153 @@ pub fn render(model: &ModelFile) -> Result<String> {
     writeln!(o, "/// Dequantisation step of the integer output.")?;
     writeln!(o, "pub const INT_OUTPUT_STEP: f32 = {};", f(q.output_step))?;
     writeln!(o)?;
+    Ok(())
+}
+
+/// `select_features` out of the contact's full feature list.
+fn write_select(o: &mut String, doc: &str, n_all: usize, select: &str) -> Result<()> {
+    writeln!(o, "/// The network's features out of {doc}.")?;
+    writeln!(o, "#[inline(always)]")?;
     writeln!(
         o,
-        "/// The network's features out of (ln W, ln U, ln G, ln η₀, E'/GPa)."
+        "pub fn select_features(f: &[f32; {n_all}]) -> [f32; N_IN] {{"
     )?;
-    writeln!(o, "#[inline(always)]")?;
-    writeln!(o, "pub fn select_features(f: &[f32; 5]) -> [f32; N_IN] {{")?;
     writeln!(o, "    {select}")?;
     writeln!(o, "}}")?;
+    Ok(())
+}
+
+/// Render the line contact's generated Rust source.
+pub fn render(model: &ModelFile) -> Result<String> {
+    let (q, target) = exportable(model)?;
+    let (n_in, select, input_set) = match model.trained.options.inputs {
+        InputSet::Wug => (3, "[f[0], f[1], f[2]]", "Wug"),
+        InputSet::WugEtaModulus => (5, "*f", "WugEtaModulus"),
+        InputSet::Mlk | InputSet::MlkGEtaModulus => {
+            bail!("a point-contact model: export it with `render_point` (`bearing export` tells the contacts apart)")
+        }
+    };
+    let mut o = String::new();
+    write_header(&mut o, model, n_in, LINE_WEIGHTS_PATH)?;
+    writeln!(o, "use super::float::{{Activation, DenseF32}};")?;
+    writeln!(o, "use super::int::{{DenseInt, Lut, LutLanes}};")?;
+    writeln!(o, "use super::{{DomainLimits, InputSet, TargetForm}};")?;
+    writeln!(o)?;
+    write_identity(
+        &mut o,
+        model,
+        &format!("InputSet = InputSet::{input_set}"),
+        n_in,
+        target,
+    )?;
+    let d = &model.domain;
+    writeln!(o, "/// Training domain (10⁻⁵ relative slack).")?;
+    writeln!(o, "pub const DOMAIN: DomainLimits = DomainLimits {{")?;
+    writeln!(
+        o,
+        "    inputs: [{}, {}, {}, {}, {}, {}, {}],",
+        slack_interval(&d.load_n),
+        slack_interval(&d.entrainment_speed_m_s),
+        slack_interval(&d.reduced_radius_m),
+        slack_interval(&d.reduced_modulus_pa),
+        slack_interval(&d.pressure_viscosity_pa_inv),
+        slack_interval(&d.viscosity_pa_s),
+        slack_interval(&d.length_m)
+    )?;
+    writeln!(
+        o,
+        "    ln_hertz_pressure: {},",
+        slack_ln_interval(&d.hertz_pressure_pa)
+    )?;
+    writeln!(
+        o,
+        "    piezo_min_log_ratio: {},",
+        f(d.regime.piezo_min_log_ratio - 1e-5)
+    )?;
+    writeln!(
+        o,
+        "    elastic_max_log_ratio: {},",
+        f(d.regime.elastic_max_log_ratio + 1e-5)
+    )?;
+    writeln!(o, "}};")?;
+    write_normalisation(&mut o, &model.trained, q)?;
+    write_select(&mut o, "(ln W, ln U, ln G, ln η₀, E'/GPa)", 5, select)?;
+    write_layers(&mut o, &model.trained, q)?;
+    Ok(o)
+}
+
+/// Render the point contact's generated Rust source (`core::film::ann::point`).
+pub fn render_point(model: &ModelFile<PointDomain>) -> Result<String> {
+    let (q, target) = exportable(model)?;
+    let (n_in, select, input_set) = match model.trained.options.inputs {
+        InputSet::Mlk => (3, "[f[0], f[1], f[2]]", "Mlk"),
+        InputSet::MlkGEtaModulus => (6, "*f", "MlkGEtaModulus"),
+        InputSet::Wug | InputSet::WugEtaModulus => {
+            bail!("a line-contact model: export it with `render`")
+        }
+    };
+    let mut o = String::new();
+    write_header(&mut o, model, n_in, POINT_WEIGHTS_PATH)?;
+    writeln!(o, "use super::float::{{Activation, DenseF32}};")?;
+    writeln!(o, "use super::int::{{DenseInt, Lut, LutLanes}};")?;
+    writeln!(o, "use super::point::{{PointDomainLimits, PointInputSet}};")?;
+    writeln!(o, "use super::TargetForm;")?;
+    writeln!(o)?;
+    write_identity(
+        &mut o,
+        model,
+        &format!("PointInputSet = PointInputSet::{input_set}"),
+        n_in,
+        target,
+    )?;
+    let d = &model.domain;
+    writeln!(o, "/// Training domain (10⁻⁵ relative slack).")?;
+    writeln!(
+        o,
+        "pub const DOMAIN: PointDomainLimits = PointDomainLimits {{"
+    )?;
+    writeln!(
+        o,
+        "    inputs: [{}, {}, {}, {}, {}, {}, {}],",
+        slack_interval(&d.load_n),
+        slack_interval(&d.entrainment_speed_m_s),
+        slack_interval(&d.radius_x_m),
+        slack_interval(&d.radius_ratio),
+        slack_interval(&d.reduced_modulus_pa),
+        slack_interval(&d.pressure_viscosity_pa_inv),
+        slack_interval(&d.viscosity_pa_s)
+    )?;
+    writeln!(
+        o,
+        "    ln_hertz_pressure: {},",
+        slack_ln_interval(&d.hertz_pressure_pa)
+    )?;
+    writeln!(o, "    ln_moes_m: {},", slack_ln_interval(&d.moes_m))?;
+    writeln!(
+        o,
+        "    ln_m_per_ellipticity: {},",
+        f((d.m_per_ellipticity * (1.0 + 1e-5)).ln())
+    )?;
+    writeln!(
+        o,
+        "    ln_elongated_from_ellipticity: {},",
+        f((d.elongated_from_ellipticity * (1.0 - 1e-5)).ln())
+    )?;
+    writeln!(
+        o,
+        "    ln_elongated_m_per_ellipticity: {},",
+        f((d.elongated_m_per_ellipticity * (1.0 + 1e-5)).ln())
+    )?;
+    writeln!(o, "    ln_moes_l: {},", slack_ln_interval(&d.moes_l))?;
+    writeln!(o, "}};")?;
+    write_normalisation(&mut o, &model.trained, q)?;
+    write_select(&mut o, "(ln M, ln L, ln k, ln G, ln η₀, E'/GPa)", 6, select)?;
+    write_layers(&mut o, &model.trained, q)?;
+    Ok(o)
+}
+
+/// The f32 and integer layers, the activation table and the two forward functions.
+fn write_layers(o: &mut String, t: &Trained, q: &Quantised) -> Result<()> {
     // f32 layers.
     let n_layers = t.net.layers.len();
     for (k, l) in t.net.layers.iter().enumerate() {
@@ -326,5 +519,5 @@ pub fn render(model: &ModelFile) -> Result<String> {
         }
     }
     writeln!(o, "}}")?;
-    Ok(o)
+    Ok(())
 }
