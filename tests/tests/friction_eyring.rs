@@ -6,8 +6,8 @@
 //! the core's traction model (Hertzian pressure widened at light load, 4-node quadrature), not
 //! its film model. The
 //! core's viscous friction as the step computes it is the lesser of that and the thermal
-//! (Evans–Johnson) traction; at the bearing's default slide-to-roll ratio of 1 % the thermal
-//! cap is compared too.
+//! (Evans–Johnson) traction, compared too, at slide-to-roll ratios 0.3–10 % and Eyring
+//! stresses 2–20 MPa.
 
 use bearing_core::film::ann::model_weights::DOMAIN;
 use bearing_core::film::ann::AnnF32;
@@ -74,13 +74,40 @@ fn median_p95(mut v: Vec<f64>) -> (f64, f64) {
 /// lower and wider than Hertz's, which the core's widening of the pressure zone approximates.
 const MIN_ELASTIC_MOES_M: f64 = 10.0;
 
+/// Slide-to-roll ratios and Eyring stresses (Pa) the core is checked at besides the bearing's
+/// default (s = 1 %, τ₀ = 5 MPa, asserted above).
+const SLIDE_TO_ROLL: [f32; 4] = [0.003, 0.01, 0.03, 0.1];
+const EYRING_STRESS_PA: [f32; 3] = [2.0e6, 5.0e6, 2.0e7];
+
 #[test]
 fn core_viscous_friction_matches_the_integrated_eyring_shear() {
-    let eyring_stress_pa = 5.0e6_f32;
-    let slide_to_roll = 0.01_f32;
     let contacts = domain_contacts(1, 60);
     assert_eq!(contacts.len(), 60);
     let opts = barus();
+    let solutions: Vec<_> = contacts
+        .iter()
+        .map(|c| {
+            let case = case_of(c);
+            (bearing_ehl::solve(&case, &opts).unwrap(), case)
+        })
+        .collect();
+    for eyring_stress_pa in EYRING_STRESS_PA {
+        for slide_to_roll in SLIDE_TO_ROLL {
+            check_at(&contacts, &solutions, eyring_stress_pa, slide_to_roll);
+        }
+    }
+}
+
+/// Compares the core with the host over `contacts` (solved: `solutions`) at one Eyring stress
+/// and slide-to-roll ratio, prints the errors and, at the bearing's default (τ₀ = 5 MPa,
+/// s = 1 %), asserts the goal where the core's Hertzian pressure holds and the level the
+/// widened zone reaches over the whole domain.
+fn check_at(
+    contacts: &[ContactInput],
+    solutions: &[(bearing_ehl::EhlSolution, ContactCase)],
+    eyring_stress_pa: f32,
+    slide_to_roll: f32,
+) {
     // Smooth surfaces (σ = 1 nm): no asperity contact, the film carries the whole load.
     let friction = FrictionDesign {
         composite_roughness_m: 1.0e-9,
@@ -93,12 +120,10 @@ fn core_viscous_friction_matches_the_integrated_eyring_shear() {
     let (mut isothermal_err, mut step_err) = (Vec::new(), Vec::new());
     // (core/reference − 1, M, L) of the isothermal traction, to list the largest.
     let mut signed = Vec::new();
-    for c in &contacts {
-        let case = case_of(c);
-        let sol = bearing_ehl::solve(&case, &opts).unwrap();
+    for (c, (sol, case)) in contacts.iter().zip(solutions) {
         let sliding = f64::from(slide_to_roll * c.entrainment_speed_m_s);
         let reference = eyring_traction_n(
-            &sol,
+            sol,
             ViscosityLaw::Barus,
             f64::from(c.length_m),
             sliding,
@@ -141,14 +166,17 @@ fn core_viscous_friction_matches_the_integrated_eyring_shear() {
             .collect::<Vec<_>>()
     };
     let elastic_count = ehl(&isothermal_err).len();
-    signed.sort_by(|a, b| b.0.abs().total_cmp(&a.0.abs()));
-    let above = signed.iter().filter(|e| e.0.abs() > 0.10).count();
-    println!(
-        "isothermal Eyring: {above} of {} contacts off by more than 10 %; the largest:",
-        signed.len()
-    );
-    for (error, m, l) in signed.iter().take(above.min(10)) {
-        println!("  M {m:7.3}  L {l:6.2}: {:+6.1} %", error * 100.0);
+    let default = eyring_stress_pa == 5.0e6 && slide_to_roll == 0.01;
+    if default {
+        signed.sort_by(|a, b| b.0.abs().total_cmp(&a.0.abs()));
+        let above = signed.iter().filter(|e| e.0.abs() > 0.10).count();
+        println!(
+            "isothermal Eyring: {above} of {} contacts off by more than 10 %; the largest:",
+            signed.len()
+        );
+        for (error, m, l) in signed.iter().take(above.min(10)) {
+            println!("  M {m:7.3}  L {l:6.2}: {:+6.1} %", error * 100.0);
+        }
     }
     for (what, errors) in [
         ("isothermal Eyring", &isothermal_err),
@@ -160,8 +188,10 @@ fn core_viscous_friction_matches_the_integrated_eyring_shear() {
         let (median, p95) = median_p95(all(errors));
         let (ehl_median, ehl_p95) = median_p95(ehl(errors));
         println!(
-            "{what}, core vs host at s = {slide_to_roll}: all {} domain contacts median {:.2} %, p95 {:.2} %; \
-             the {elastic_count} with M ≥ {MIN_ELASTIC_MOES_M} median {:.2} %, p95 {:.2} %",
+            "{what}, core vs host at τ₀ = {} MPa, s = {slide_to_roll}: all {} domain contacts \
+             median {:.2} %, p95 {:.2} %; the {elastic_count} with M ≥ {MIN_ELASTIC_MOES_M} \
+             median {:.2} %, p95 {:.2} %",
+            eyring_stress_pa * 1e-6,
             contacts.len(),
             median * 100.0,
             p95 * 100.0,
@@ -169,14 +199,16 @@ fn core_viscous_friction_matches_the_integrated_eyring_shear() {
             ehl_p95 * 100.0
         );
     }
-    // The goal, where the core's Hertzian pressure holds (elastohydrodynamic contacts)...
-    let (median, p95) = median_p95(ehl(&isothermal_err));
-    assert!(elastic_count >= 30, "{elastic_count}");
-    assert!(median < 0.10 && p95 < 0.10, "median {median}, p95 {p95}");
-    // ...and over the whole domain, light-load end included (docs/friction.md: the widened
-    // pressure zone brings it within 10 % at the median, not yet at the 95th percentile).
-    let (median, p95) = median_p95(all(&isothermal_err));
-    assert!(median < 0.10 && p95 < 0.35, "median {median}, p95 {p95}");
+    if default {
+        // The goal, where the core's Hertzian pressure holds (elastohydrodynamic contacts)...
+        let (median, p95) = median_p95(ehl(&isothermal_err));
+        assert!(elastic_count >= 30, "{elastic_count}");
+        assert!(median < 0.10 && p95 < 0.10, "median {median}, p95 {p95}");
+        // ...and over the whole domain, light-load end included (docs/friction.md: the widened
+        // pressure zone brings it within 10 % at the median, not yet at the 95th percentile).
+        let (median, p95) = median_p95(all(&isothermal_err));
+        assert!(median < 0.10 && p95 < 0.35, "median {median}, p95 {p95}");
+    }
 }
 
 /// The EHL case of a contact.
