@@ -3,17 +3,18 @@
 //! over the film network's training domain (docs/physics.md §8.3, docs/friction.md).
 //!
 //! Both sides use the Barus viscosity and the numerical central film, so the comparison tests
-//! the core's traction model (Hertzian pressure widened at light load, 4-node quadrature), not
-//! its film model. The
+//! the core's traction model, not its film model: the mean stress ratio T(M, L, N) tabulated
+//! from solutions at one α on a grid of Moes' M and L (`generate_traction_table` below), read
+//! back by tricubic interpolation, against the traction of each contact's own solution. The
 //! core's viscous friction as the step computes it is the lesser of that and the thermal
 //! (Evans–Johnson) traction, compared too, at slide-to-roll ratios 0.3–10 % and Eyring
 //! stresses 2–20 MPa.
 
 use bearing_core::film::ann::model_weights::DOMAIN;
 use bearing_core::film::ann::AnnF32;
-use bearing_core::friction::traction::{isothermal_eyring_n, pressure_zone_widening};
+use bearing_core::friction::traction::IsothermalEyring;
 use bearing_core::{ContactInput, FilmModel, FilmSource, FrictionDesign};
-use bearing_ehl::traction::eyring_traction_n;
+use bearing_ehl::traction::{eyring_traction_n, mean_stress_ratio};
 use bearing_ehl::{ContactCase, SolverOptions, ViscosityLaw};
 
 /// The i-th point of the Halton sequence in base `base`, in (0, 1).
@@ -99,9 +100,9 @@ fn core_viscous_friction_matches_the_integrated_eyring_shear() {
 }
 
 /// Compares the core with the host over `contacts` (solved: `solutions`) at one Eyring stress
-/// and slide-to-roll ratio, prints the errors and, at the bearing's default (τ₀ = 5 MPa,
-/// s = 1 %), asserts the goal where the core's Hertzian pressure holds and the level the
-/// widened zone reaches over the whole domain.
+/// and slide-to-roll ratio, prints the errors (also of the contacts with M ≥ 10 alone, the
+/// elastohydrodynamic ones) and asserts the goal: the isothermal traction within 10 % at the
+/// median and the 95th percentile over the whole domain.
 fn check_at(
     contacts: &[ContactInput],
     solutions: &[(bearing_ehl::EhlSolution, ContactCase)],
@@ -132,22 +133,16 @@ fn check_at(
         let film = sol.central_film_m as f32;
         let b = sol.hertz_half_width_m as f32;
         let peak = sol.hertz_pressure_pa as f32;
-        let widening = pressure_zone_widening(
-            film,
-            c.reduced_radius_m,
-            b,
-            c.pressure_viscosity_pa_inv * peak,
-        );
-        let core = isothermal_eyring_n(
+        let core = IsothermalEyring::new(
             eyring_stress_pa,
             c.viscosity_pa_s,
             c.pressure_viscosity_pa_inv,
+            c.entrainment_speed_m_s,
             sliding as f32,
-            film,
-            peak / widening,
-            b * widening,
-            c.length_m,
-        );
+            c.reduced_radius_m,
+            c.reduced_modulus_pa,
+        )
+        .traction_n(c.load_n, c.length_m, b, peak, film);
         let step = friction.contact(c, film).viscous_n;
         let elastic = case.moes_m() >= MIN_ELASTIC_MOES_M;
         isothermal_err.push((elastic, (f64::from(core) / reference - 1.0).abs()));
@@ -199,16 +194,13 @@ fn check_at(
             ehl_p95 * 100.0
         );
     }
-    if default {
-        // The goal, where the core's Hertzian pressure holds (elastohydrodynamic contacts)...
-        let (median, p95) = median_p95(ehl(&isothermal_err));
-        assert!(elastic_count >= 30, "{elastic_count}");
-        assert!(median < 0.10 && p95 < 0.10, "median {median}, p95 {p95}");
-        // ...and over the whole domain, light-load end included (docs/friction.md: the widened
-        // pressure zone brings it within 10 % at the median, not yet at the 95th percentile).
-        let (median, p95) = median_p95(all(&isothermal_err));
-        assert!(median < 0.10 && p95 < 0.35, "median {median}, p95 {p95}");
-    }
+    // The goal over the whole domain, at every slide-to-roll ratio and Eyring stress: the
+    // tabulated solver's traction within 10 % at the median and the 95th percentile.
+    let (median, p95) = median_p95(all(&isothermal_err));
+    assert!(
+        median < 0.10 && p95 < 0.10,
+        "τ₀ = {eyring_stress_pa} Pa, s = {slide_to_roll}: median {median}, p95 {p95}"
+    );
 }
 
 /// The EHL case of a contact.
@@ -232,8 +224,35 @@ fn barus() -> SolverOptions {
     }
 }
 
-/// Regenerates the pressure-zone widening of the core (`WIDENING_COEFFICIENT` and the blend
-/// exponent of `pressure_zone_widening`): 240 contacts of the network's domain from index
+/// The isothermal Eyring traction (N) of a Hertzian pressure of peak `peak_pa` over half-width
+/// `b` (m) and length `l`, mean of τ₀·asinh(e^{ln N + α·p}) by the 4-point Gauss–Legendre rule
+/// in θ (p = p_peak·cos θ): the model the pressure-zone widening is fitted in.
+fn hertz_zone_eyring_n(
+    tau: f32,
+    ln_newtonian: f32,
+    alpha: f32,
+    peak_pa: f32,
+    b: f32,
+    l: f32,
+) -> f32 {
+    // cos θ_i and w_i·cos θ_i, θ = (π/4)(1 + x_i), x_i ±0.339 981 04, ±0.861 136 31.
+    let q = std::f32::consts::FRAC_PI_4;
+    let nodes = [
+        (0.994_058_5_f32, q * 0.347_854_85),
+        (0.868_624_1, q * 0.652_145_15),
+        (0.495_471_6, q * 0.652_145_15),
+        (0.108_847_2, q * 0.347_854_85),
+    ];
+    let mean: f32 = nodes
+        .iter()
+        .map(|&(c, w)| w * c * (ln_newtonian + alpha * peak_pa * c).exp().asinh())
+        .sum();
+    2.0 * b * l * tau * mean
+}
+
+/// Regenerates the pressure-zone widening of the core's thermal traction
+/// (`WIDENING_COEFFICIENT` and the blend exponent of `pressure_zone_widening`), fitted to the
+/// isothermal traction over the widened Hertz zone ([`hertz_zone_eyring_n`]): 240 contacts of the network's domain from index
 /// 3000 of the Halton sequence (disjoint from the 60 the test above reports), each solved
 /// once and its Eyring traction integrated at slide-to-roll ratios 0.3, 1, 3 and 10 %; prints
 /// the 95th percentile and median of |core/reference − 1| for each (c, exponent) of a grid,
@@ -275,12 +294,12 @@ fn fit_pressure_zone_widening() {
                     let alpha_peak = (c.pressure_viscosity_pa_inv * peak).max(1.0);
                     let r_sq = coefficient * c.reduced_radius_m * film / (b * b * alpha_peak);
                     let widening = (1.0 + r_sq.powf(exponent / 2.0)).powf(1.0 / exponent);
-                    let core = isothermal_eyring_n(
+                    let ln_newtonian =
+                        (c.viscosity_pa_s * sliding / (film * eyring_stress_pa)).ln();
+                    let core = hertz_zone_eyring_n(
                         eyring_stress_pa,
-                        c.viscosity_pa_s,
+                        ln_newtonian,
                         c.pressure_viscosity_pa_inv,
-                        sliding,
-                        film,
                         peak / widening,
                         b * widening,
                         c.length_m,
@@ -302,120 +321,194 @@ fn fit_pressure_zone_widening() {
     }
 }
 
-/// Step of ln M and ln L of the candidate traction table [`traction_table_interpolation`]
-/// measures.
-const TABLE_STEP_LN_ML: f64 = 0.25;
-/// First node, step and count of z = ln N + α·p_h on that table.
+/// The grid of the core's traction table (`bearing_core::friction::traction_table`): first
+/// node, step and count of ln M, ln L and z = ln N + α·p_h.
+const TABLE_LN_M: (f64, f64, usize) = (-3.5, 0.25, 47);
+const TABLE_LN_L: (f64, f64, usize) = (0.0, 0.25, 22);
 const TABLE_Z: (f64, f64, usize) = (-8.0, 2.0, 57);
+/// The lubricant and contact every node is solved with: α (1/Pa, the middle of the network's
+/// domain), E′ (Pa) and R (m). Only α·p_h and, through the density, p_h matter besides M and L.
+const TABLE_ALPHA_PA_INV: f64 = 1.732e-8;
+const TABLE_MODULUS_PA: f64 = 2.26e11;
+const TABLE_RADIUS_M: f64 = 0.01;
 
-/// Catmull–Rom cubic through p₀…p₃ at t ∈ [0, 1] between p₁ and p₂.
-fn catmull_rom(p: [f64; 4], t: f64) -> f64 {
-    let c1 = 0.5 * (p[2] - p[0]);
-    let c2 = p[0] - 2.5 * p[1] + 2.0 * p[2] - 0.5 * p[3];
-    let c3 = 0.5 * (p[3] - p[0]) + 1.5 * (p[1] - p[2]);
-    p[1] + t * (c1 + t * (c2 + t * c3))
+/// The contact of Moes' ln M and ln L at the table's α, E′ and R: u = 10 m/s unless η₀ would
+/// leave [10⁻⁴, 10³] Pa·s.
+fn table_case(ln_m: f64, ln_l: f64) -> Option<ContactCase> {
+    let (alpha, e, r) = (TABLE_ALPHA_PA_INV, TABLE_MODULUS_PA, TABLE_RADIUS_M);
+    let two_u = (ln_l.exp() / (alpha * e)).powi(4);
+    let eta_u = 0.5 * two_u * e * r;
+    let w = ln_m.exp() * two_u.sqrt() * e * r;
+    let eta = (eta_u / 10.0).clamp(1.0e-4, 1.0e3);
+    ContactCase::new(w, eta_u / eta, r, e, alpha, eta).ok()
 }
 
-/// The mean Eyring stress ratio T = (1/(b·τ₀))∫τ dx of a solution at N = e^`ln_n`,
-/// N = η₀·u_s/(h_c·τ₀) (docs/physics.md §8.3).
-fn mean_stress_ratio(sol: &bearing_ehl::EhlSolution, ln_n: f64) -> f64 {
-    // τ₀ = 1 Pa, l = 1 m: u_s = N·h_c/η₀.
-    let sliding = ln_n.exp() * sol.central_film_m / sol.case.viscosity_pa_s;
-    eyring_traction_n(sol, ViscosityLaw::Barus, 1.0, sliding, 1.0) / sol.hertz_half_width_m
-}
-
-/// Measures a candidate for the core's isothermal traction, in f64: a table of ln T over
-/// (ln M, ln L, z = ln N + α·p_h), each (M, L) node solved once at α = 1.732·10⁻⁸ 1/Pa (with
-/// Dowson–Higginson compressibility T depends on p_h besides M, L and N), ln M from −3.5 and
-/// ln L from 0 by [`TABLE_STEP_LN_ML`], z by [`TABLE_Z`] with Catmull–Rom in z; interpolated
-/// bilinearly or Catmull–Rom bicubically in (ln M, ln L). Prints the median and 95th
-/// percentile of |table/reference − 1| over the 60 contacts of the test above at
-/// s = 0.3, 1, 3, 10 % (τ₀ = 5 MPa), and those of T solved at each contact's own (M, L, N) at
-/// the table's α (measured median 0.06 %, p95 1.9 %: p_h barely enters). Measured: step 0.5 bilinear median 1.7 %, p95 39 %;
-/// bicubic 1.4 %, 21 %; step 0.25 bilinear 0.44 %, 15 %; bicubic 0.41 %, 5.2 %
-/// (47 × 21 × 57 nodes: 112 kB as i16). ≈ 2.5 min.
-#[test]
-#[ignore = "measures a candidate traction table; run by hand"]
-fn traction_table_interpolation() {
-    let opts = barus();
-    let step = TABLE_STEP_LN_ML;
-    let (m0, l0) = (-3.5, 0.0);
-    let (nm, nl) = ((11.5 / step) as usize + 1, (5.0 / step) as usize + 1);
+/// ln T at the z nodes of one (ln M, ln L) node, solved at the table's α; `None` where the
+/// solver refuses or fails.
+fn table_row(ln_m: f64, ln_l: f64) -> Option<Vec<f64>> {
+    let sol = bearing_ehl::solve(&table_case(ln_m, ln_l)?, &barus()).ok()?;
+    let alpha_peak = TABLE_ALPHA_PA_INV * sol.hertz_pressure_pa;
     let (z0, dz, nz) = TABLE_Z;
-    let (alpha, e, r) = (1.732e-8, 2.26e11, 0.01);
-    let case_at = |ln_m: f64, ln_l: f64| {
-        let two_u = (ln_l.exp() / (alpha * e)).powi(4);
-        let eta_u = 0.5 * two_u * e * r;
-        let w = ln_m.exp() * two_u.sqrt() * e * r;
-        // η₀·u = U·E′R: u = 10 m/s unless η₀ would leave [10⁻⁴, 10³] Pa·s.
-        let eta = (eta_u / 10.0).clamp(1.0e-4, 1.0e3);
-        ContactCase::new(w, eta_u / eta, r, e, alpha, eta)
-    };
-    // ln T per node and z; NaN where no solution (α·p_h > 300, far outside the domain).
-    let mut table = vec![vec![f64::NAN; nz]; nm * nl];
-    for i in 0..nm {
-        for j in 0..nl {
-            let (ln_m, ln_l) = (m0 + step * i as f64, l0 + step * j as f64);
+    Some(
+        (0..nz)
+            .map(|k| {
+                let ln_n = z0 + dz * k as f64 - alpha_peak;
+                mean_stress_ratio(&sol, ViscosityLaw::Barus, ln_n).ln()
+            })
+            .collect(),
+    )
+}
+
+/// The (ln M, ln L) nodes the tricubic interpolation reads for contacts of the network's
+/// domain: the 4 × 4 nodes around the cell of each of 200 000 Halton points the guard accepts.
+fn nodes_the_domain_reads() -> Vec<bool> {
+    let (m0, dm, nm) = TABLE_LN_M;
+    let (l0, dl, nl) = TABLE_LN_L;
+    let mut needed = vec![false; nm * nl];
+    for c in domain_contacts(1, 200_000) {
+        let case = case_of(&c);
+        let fm = ((case.moes_m().ln() - m0) / dm).clamp(1.0, (nm - 2) as f64);
+        let fl = ((case.moes_l().ln() - l0) / dl).clamp(1.0, (nl - 2) as f64);
+        let (i, j) = ((fm as usize).min(nm - 3), (fl as usize).min(nl - 3));
+        for a in i - 1..=i + 2 {
+            for b in j - 1..=j + 2 {
+                needed[a * nl + b] = true;
+            }
+        }
+    }
+    needed
+}
+
+/// Regenerates `core/src/friction/traction_table.rs`: every node the domain reads is solved
+/// (the run fails if one does not), the others where α·p_h ≤ 150 and the solver converges;
+/// nodes left unsolved (outside the domain) copy the nearest solved node of lower ln L in their
+/// row, or of lower ln M. ≈ 2 min on 2 cores.
+#[test]
+#[ignore = "regenerates core/src/friction/traction_table.rs; run by hand"]
+fn generate_traction_table() {
+    use rayon::prelude::*;
+    let (m0, dm, nm) = TABLE_LN_M;
+    let (l0, dl, nl) = TABLE_LN_L;
+    let needed = nodes_the_domain_reads();
+    let rows: Vec<Option<Vec<f64>>> = (0..nm * nl)
+        .into_par_iter()
+        .map(|n| {
+            let (ln_m, ln_l) = (m0 + dm * (n / nl) as f64, l0 + dl * (n % nl) as f64);
             let alpha_peak = (ln_l + 0.5 * ln_m).exp() / (2.0 * std::f64::consts::PI).sqrt();
-            if alpha_peak > 300.0 {
-                continue;
-            }
-            let Ok(sol) = case_at(ln_m, ln_l).and_then(|c| bearing_ehl::solve(&c, &opts)) else {
-                continue;
-            };
-            let alpha_peak = alpha * sol.hertz_pressure_pa;
-            for (k, v) in table[i * nl + j].iter_mut().enumerate() {
-                *v = mean_stress_ratio(&sol, z0 + dz * k as f64 - alpha_peak).ln();
-            }
+            (needed[n] || alpha_peak <= 150.0)
+                .then(|| table_row(ln_m, ln_l))
+                .flatten()
+        })
+        .collect();
+    let missing: Vec<_> = (0..nm * nl)
+        .filter(|&n| needed[n] && rows[n].is_none())
+        .map(|n| (m0 + dm * (n / nl) as f64, l0 + dl * (n % nl) as f64))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "unsolved (ln M, ln L) nodes the domain reads: {missing:?}"
+    );
+    let mut copied = 0;
+    let values: Vec<f64> = (0..nm * nl)
+        .flat_map(|n| {
+            let (i, j) = (n / nl, n % nl);
+            // The node itself, else the nearest solved one of lower ln L, else of lower ln M.
+            let source = std::iter::once(n)
+                .chain((0..j).rev().map(|b| i * nl + b))
+                .chain((0..i).rev().map(|a| a * nl + j))
+                .find(|&s| rows[s].is_some())
+                .expect("every row has a solved node at ln L = 0");
+            copied += usize::from(source != n);
+            rows[source].clone().unwrap_or_default()
+        })
+        .collect();
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../core/src/friction/traction_table.rs"
+    );
+    let text = render_traction_table(&values);
+    let tmp = format!("{path}.tmp");
+    std::fs::write(&tmp, text).unwrap();
+    std::fs::rename(&tmp, path).unwrap();
+    let solved = rows.iter().filter(|r| r.is_some()).count();
+    println!(
+        "{solved} of {} nodes solved ({} read by the domain), {copied} copied; wrote {path}",
+        nm * nl,
+        needed.iter().filter(|&&n| n).count()
+    );
+}
+
+/// The text of `core/src/friction/traction_table.rs` for ln T at every node, (i·L + j)·Z + k.
+fn render_traction_table(ln_t: &[f64]) -> String {
+    use std::fmt::Write;
+    let lo = ln_t.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = ln_t.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    // i16 codes −32 767 … 32 767 over [lo, hi].
+    let step = (hi - lo) / 65_534.0;
+    let offset = 0.5 * (lo + hi);
+    let (m0, dm, nm) = TABLE_LN_M;
+    let (l0, dl, nl) = TABLE_LN_L;
+    let (z0, dz, nz) = TABLE_Z;
+    let mut s = String::new();
+    let _ = write!(
+        s,
+        "//! GENERATED by `cargo test --release -p bearing-tests --test friction_eyring -- --ignored \
+         generate_traction_table` — do not edit.\n\
+         //!\n\
+         //! ln T, the mean isothermal Eyring stress ratio of a line contact (docs/physics.md §8.3),\n\
+         //! integrated over the numerical solver's pressure and film (Barus viscosity,\n\
+         //! Dowson–Higginson density; α = {TABLE_ALPHA_PA_INV:e} 1/Pa, E′ = {TABLE_MODULUS_PA:e} Pa,\n\
+         //! R = {TABLE_RADIUS_M} m) on a grid of Moes' ln M × ln L × z, z = ln N + α·p_h.\n\n\
+         /// First node and step of ln M.\npub const LN_M: (f32, f32) = ({m0:?}, {dm:?});\n\
+         /// Nodes of ln M.\npub const M_NODES: usize = {nm};\n\
+         /// First node and step of ln L.\npub const LN_L: (f32, f32) = ({l0:?}, {dl:?});\n\
+         /// Nodes of ln L.\npub const L_NODES: usize = {nl};\n\
+         /// First node and step of z = ln N + α·p_h.\npub const Z: (f32, f32) = ({z0:?}, {dz:?});\n\
+         /// Nodes of z.\npub const Z_NODES: usize = {nz};\n\
+         /// ln T of code 0 of [`LN_MEAN_STRESS_RATIO`].\npub const LN_T_OFFSET: f32 = {:?};\n\
+         /// ln T per unit of [`LN_MEAN_STRESS_RATIO`].\npub const LN_T_STEP: f32 = {:?};\n\
+         /// (ln T − [`LN_T_OFFSET`])/[`LN_T_STEP`] at node (i, j, k) of (ln M, ln L, z), index\n\
+         /// (i·[`L_NODES`] + j)·[`Z_NODES`] + k; one line per (i, j).\n\
+         #[rustfmt::skip]\n\
+         pub static LN_MEAN_STRESS_RATIO: [i16; M_NODES * L_NODES * Z_NODES] = [\n",
+        offset as f32,
+        step as f32
+    );
+    for row in ln_t.chunks(nz) {
+        let codes: Vec<String> = row
+            .iter()
+            .map(|v| (((v - offset) / step).round() as i16).to_string())
+            .collect();
+        let _ = writeln!(s, "    {},", codes.join(", "));
+    }
+    s.push_str("];\n");
+    s
+}
+
+/// The committed table is the solver's: nodes spread over the domain's band, re-solved, agree
+/// with their codes to the quantisation step (plus the solver's run-to-run identity).
+#[test]
+fn traction_table_holds_the_solvers_stress_ratio() {
+    use bearing_core::friction::traction_table as t;
+    assert_eq!((t::LN_M.0, t::LN_M.1, t::M_NODES), grid_f32(TABLE_LN_M));
+    assert_eq!((t::LN_L.0, t::LN_L.1, t::L_NODES), grid_f32(TABLE_LN_L));
+    assert_eq!((t::Z.0, t::Z.1, t::Z_NODES), grid_f32(TABLE_Z));
+    let (m0, dm, _) = TABLE_LN_M;
+    let (l0, dl, nl) = TABLE_LN_L;
+    let nz = TABLE_Z.2;
+    for (i, j) in [(2, 18), (12, 8), (20, 3), (24, 14), (34, 6), (44, 3)] {
+        let row = table_row(m0 + dm * i as f64, l0 + dl * j as f64).unwrap();
+        for (k, ln_t) in row.iter().enumerate() {
+            let code = t::LN_MEAN_STRESS_RATIO[(i * nl + j) * nz + k];
+            let stored = f64::from(t::LN_T_OFFSET) + f64::from(code) * f64::from(t::LN_T_STEP);
+            assert!(
+                (stored - ln_t).abs() <= 0.6 * f64::from(t::LN_T_STEP) + 1e-6,
+                "node ({i}, {j}, {k}): stored {stored}, solver {ln_t}"
+            );
         }
     }
-    let in_z = |row: &[f64], z: f64| {
-        let f = ((z - z0) / dz).clamp(1.0, (nz - 2) as f64);
-        let k = (f as usize).clamp(1, nz - 3);
-        catmull_rom([row[k - 1], row[k], row[k + 1], row[k + 2]], f - k as f64)
-    };
-    let (mut bilinear, mut bicubic, mut same_groups) = (Vec::new(), Vec::new(), Vec::new());
-    for c in &domain_contacts(1, 60) {
-        let case = case_of(c);
-        let sol = bearing_ehl::solve(&case, &opts).unwrap();
-        let fm = (case.moes_m().ln() - m0) / step;
-        let fl = (case.moes_l().ln() - l0) / step;
-        let (i, j) = ((fm as usize).min(nm - 2), (fl as usize).min(nl - 2));
-        let (tm, tl) = (fm - i as f64, fl - j as f64);
-        let alpha_peak = case.pressure_viscosity_pa_inv * sol.hertz_pressure_pa;
-        // The contact's (M, L) at the table's α: T at the same N differs only through p_h.
-        let twin = case_at(case.moes_m().ln(), case.moes_l().ln())
-            .and_then(|c| bearing_ehl::solve(&c, &opts))
-            .unwrap();
-        for slide_to_roll in [0.003, 0.01, 0.03, 0.1] {
-            let ln_n = (case.viscosity_pa_s * slide_to_roll * case.entrainment_speed_m_s
-                / (sol.central_film_m * 5.0e6))
-                .ln();
-            let reference = mean_stress_ratio(&sol, ln_n);
-            let at = |a: usize, b: usize| in_z(&table[a * nl + b], ln_n + alpha_peak);
-            let linear = (1.0 - tm) * ((1.0 - tl) * at(i, j) + tl * at(i, j + 1))
-                + tm * ((1.0 - tl) * at(i + 1, j) + tl * at(i + 1, j + 1));
-            let clamp = |x: usize, n: usize| x.clamp(1, n) - 1;
-            let rows = [0, 1, 2, 3].map(|a| {
-                let ii = clamp(i + a, nm);
-                catmull_rom([0, 1, 2, 3].map(|b| at(ii, clamp(j + b, nl))), tl)
-            });
-            let cubic = catmull_rom(rows, tm);
-            bilinear.push((linear.exp() / reference - 1.0).abs());
-            bicubic.push((cubic.exp() / reference - 1.0).abs());
-            same_groups.push((mean_stress_ratio(&twin, ln_n) / reference - 1.0).abs());
-        }
-    }
-    for (name, errors) in [
-        ("the same (M, L, N) at the table's α", same_groups),
-        ("bilinear", bilinear),
-        ("bicubic", bicubic),
-    ] {
-        let (median, p95) = median_p95(errors);
-        println!(
-            "step {step} in ln M, ln L; {name}: median {:.2} %, p95 {:.2} %",
-            median * 100.0,
-            p95 * 100.0
-        );
-    }
+}
+
+fn grid_f32(g: (f64, f64, usize)) -> (f32, f32, usize) {
+    (g.0 as f32, g.1 as f32, g.2)
 }

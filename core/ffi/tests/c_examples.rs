@@ -352,7 +352,7 @@ fn m4_c_example_replays_the_hub_trace_bit_identically_under_qemu() {
 
 /// The minimal program of docs/c-api.md (which must show core/ffi/examples/minimal.c as it is)
 /// builds, runs, and prints the force, stiffness, cage angle and friction the core computes in
-/// Rust.
+/// Rust, as the page shows them.
 #[test]
 fn minimal_program_of_the_docs_prints_the_cores_numbers() {
     use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
@@ -376,6 +376,10 @@ fn minimal_program_of_the_docs_prints_the_cores_numbers() {
         "install a C compiler: apt-get install gcc",
     );
     let printed = String::from_utf8(run(&mut Command::new(&exe), "just built").stdout).unwrap();
+    assert!(
+        docs.contains(&printed),
+        "docs/c-api.md does not show what core/ffi/examples/minimal.c prints: {printed}"
+    );
     let numbers: Vec<f32> = printed
         .split_whitespace()
         .filter_map(|word| word.parse().ok())

@@ -223,7 +223,7 @@ impl<T: Real> Cell<T> {
         // that the compiler sees both look-ups in bounds and drops their checks and branches.
         let node = |i: usize, next: usize| {
             nodes
-                .get(min_index(i, TABLE_NODES - 2) + next)
+                .get(crate::math::min_index(i, TABLE_NODES - 2) + next)
                 .copied()
                 .unwrap_or(0.0)
         };
@@ -231,16 +231,6 @@ impl<T: Real> Cell<T> {
         let b = T::from_per_lane(&self.index, |&i| node(i, 1));
         let d = b - a;
         (a + self.fraction * d, d * self.slope_scale)
-    }
-}
-
-/// The smaller of two indices (`Ord::min` without its generic call).
-#[inline(always)]
-fn min_index(a: usize, b: usize) -> usize {
-    if a < b {
-        a
-    } else {
-        b
     }
 }
 

@@ -22,13 +22,14 @@
 pub mod asperity;
 mod params;
 pub mod traction;
+pub mod traction_table;
 
 pub use params::{FrictionDesign, FrictionParams};
 
 use crate::film::ContactInput;
 use crate::math::{max, min, select, sqrt};
 use asperity::Roughness;
-use traction::{RollingLaw, Thermal};
+use traction::{IsothermalEyring, RollingLaw, Thermal};
 
 /// Lubrication regime of a contact by its film ratio λ = h_c/σ.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -111,9 +112,9 @@ pub struct Prepared {
     roughness: Roughness,
     inv_sigma: f32,
     thermal: Thermal,
+    isothermal: IsothermalEyring,
     rolling: RollingLaw,
     rolling_speed_m_s: f32,
-    sliding_speed_m_s: f32,
 }
 
 impl Prepared {
@@ -140,9 +141,17 @@ impl Prepared {
                     * p.solid_density_kg_m3
                     * p.solid_heat_capacity_j_kgk,
             },
+            isothermal: IsothermalEyring::new(
+                p.eyring_stress_pa,
+                template.viscosity_pa_s,
+                template.pressure_viscosity_pa_inv,
+                u,
+                p.slide_to_roll_ratio * u,
+                template.reduced_radius_m,
+                template.reduced_modulus_pa,
+            ),
             rolling: RollingLaw::new(thermal_loading),
             rolling_speed_m_s: u,
-            sliding_speed_m_s: p.slide_to_roll_ratio * u,
         }
     }
 
@@ -176,7 +185,20 @@ impl Prepared {
         let mean_pressure = film_load / area;
         let boundary =
             p.boundary_shear_strength_pa * real_area + p.boundary_friction_coefficient * asperity;
-        // The film's pressure zone: Hertz's, widened at light load (b_eff/b, same load).
+        // The film's share Q − W_a on its own Hertz zone (half-width b_f, peak pressure p_f):
+        // its isothermal traction is the tabulated numerical solution's at that load.
+        let film_half_width = sqrt(8.0 * film_load * r / (core::f32::consts::PI * l * e));
+        let film_peak_pressure =
+            2.0 * film_load / (core::f32::consts::PI * max(film_half_width, 1.0e-12) * l);
+        let isothermal = self.isothermal.traction_n(
+            max(film_load, 1.0e-6),
+            l,
+            film_half_width,
+            film_peak_pressure,
+            h,
+        );
+        // The thermal (Evans–Johnson) stress over Hertz's zone, widened at light load
+        // (b_eff/b, same load), where its α·p̄/2 is the mean of ln η.
         let peak_pressure = (4.0 / core::f32::consts::PI) * mean_pressure;
         let widening = traction::pressure_zone_widening(
             h,
@@ -184,18 +206,6 @@ impl Prepared {
             b,
             input.pressure_viscosity_pa_inv * peak_pressure,
         );
-        let isothermal = traction::isothermal_eyring_n(
-            p.eyring_stress_pa,
-            input.viscosity_pa_s,
-            input.pressure_viscosity_pa_inv,
-            self.sliding_speed_m_s,
-            h,
-            peak_pressure / widening,
-            b * widening,
-            l,
-        );
-        // Evans & Johnson's α·p̄/2 is the mean of ln η over the contact: over the same
-        // (widened) zone, with its mean pressure p̄·b/b_eff.
         let thermal = area
             * widening
             * traction::evans_johnson_stress_pa(

@@ -1,5 +1,5 @@
-//! The friction model against independent references: numerical quadrature of the Gaussian
-//! and of the Eyring shear stress over the Hertz pressure, and the regime thresholds.
+//! The friction model against independent references: numerical quadrature of the Gaussian,
+//! the limits of the Eyring traction table, and the regime thresholds.
 
 use super::asperity::{f2, f5_2, LAMBDA_MAX};
 use super::*;
@@ -113,31 +113,75 @@ fn lambda_and_regimes_follow_the_film() {
     );
 }
 
-/// ∫₀^{π/2} τ₀·asinh(A·e^{a cos θ}) cos θ dθ by a 100 000-interval trapezoid rule in f64.
-fn eyring_mean_reference(newtonian: f64, a: f64) -> f64 {
-    let n = 100_000;
-    let h = core::f64::consts::FRAC_PI_2 / n as f64;
-    let g = |t: f64| (newtonian * (a * t.cos()).exp()).asinh() * t.cos();
-    let mut sum = 0.5 * (g(0.0) + g(core::f64::consts::FRAC_PI_2));
-    for i in 1..n {
-        sum += g(i as f64 * h);
-    }
-    sum * h
-}
-
+/// Beyond the table's z the traction follows its limits: Newtonian below (T ∝ N), linear in
+/// z above (the saturated limit asinh y → ln 2y); in between T rises with N, without a jump
+/// at the table's ends, at every (ln M, ln L) cell of the table.
 #[test]
-fn isothermal_eyring_quadrature_matches_fine_integration() {
-    let mut worst = 0.0f64;
-    for a in [4.0f32, 8.0, 15.0, 25.0] {
-        for k in 0..=12 {
-            let newtonian = 10f32.powf(-7.0 + 0.5 * k as f32);
-            // τ₀ = 1, h·… chosen so that the Newtonian argument is `newtonian`, b = l = 1.
-            let core = traction::isothermal_eyring_n(1.0, newtonian, 1.0, 1.0, 1.0, a, 1.0, 1.0);
-            let reference = 2.0 * eyring_mean_reference(f64::from(newtonian), f64::from(a));
-            worst = worst.max((f64::from(core) / reference - 1.0).abs());
+fn isothermal_traction_table_meets_its_limits() {
+    use super::traction_table::{LN_L, LN_M, L_NODES, M_NODES, Z, Z_NODES};
+    let z_lo = Z.0 + Z.1;
+    let z_hi = Z.0 + (Z_NODES - 2) as f32 * Z.1;
+    for i in 1..M_NODES - 2 {
+        for j in 1..L_NODES - 2 {
+            let ln_m = LN_M.0 + LN_M.1 * (i as f32 + 0.3);
+            let ln_l = LN_L.0 + LN_L.1 * (j as f32 + 0.6);
+            let t = |z: f32| traction::mean_stress_ratio(ln_m, ln_l, z);
+            // Newtonian: one unit of z below the table is a factor e.
+            let newtonian = t(z_lo - 3.0) / t(z_lo - 2.0);
+            assert!(
+                (newtonian / (-1.0f32).exp() - 1.0).abs() < 1e-4,
+                "({i}, {j}): {newtonian}"
+            );
+            // Saturated: equal steps of z above the table add equal stress.
+            let (a, b, c) = (t(z_hi + 10.0), t(z_hi + 30.0), t(z_hi + 50.0));
+            assert!(
+                ((c - b) / (b - a) - 1.0).abs() < 1e-3,
+                "({i}, {j}): {a} {b} {c}"
+            );
+            // Rising in z, by at most 12 % per 0.05 (e^{0.05} where Newtonian), and
+            // continuous across both ends of the table.
+            let mut previous = t(z_lo - 5.0);
+            let steps = ((z_hi - z_lo + 10.0) / 0.05) as usize;
+            for k in 1..=steps {
+                let value = t(z_lo - 5.0 + 0.05 * k as f32);
+                assert!(
+                    value > previous && value < 1.12 * previous,
+                    "({i}, {j}) step {k}: {value} after {previous}"
+                );
+                previous = value;
+            }
         }
     }
-    assert!(worst < 0.04, "worst {worst}");
+}
+
+/// The traction is l·b·τ₀·T at the contact's own Moes M and L and z = ln N + α·p_h, finite and
+/// non-negative for any input.
+#[test]
+fn isothermal_traction_scales_with_the_contact() {
+    let (tau, eta, alpha, u, s) = (5.0e6_f32, 0.01, 2.0e-8, 10.0, 0.02);
+    let (q, l, r, e, h) = (2000.0_f32, 0.01, 0.005, 2.3e11, 0.3e-6);
+    let w = q / l;
+    let b = (8.0 * w * r / (core::f32::consts::PI * e)).sqrt();
+    let p_h = (w * e / (2.0 * core::f32::consts::PI * r)).sqrt();
+    let two_u = 2.0 * eta * u / (e * r);
+    let ln_m = (w / (e * r)).ln() - 0.5 * two_u.ln();
+    let ln_l = (alpha * e).ln() + 0.25 * two_u.ln();
+    let z = (eta * s * u / (h * tau)).ln() + alpha * p_h;
+    let expected = l * b * tau * traction::mean_stress_ratio(ln_m, ln_l, z);
+    let eyring = traction::IsothermalEyring::new(tau, eta, alpha, u, s * u, r, e);
+    let got = eyring.traction_n(q, l, b, p_h, h);
+    assert!((got / expected - 1.0).abs() < 1e-4, "{got} {expected}");
+    for bad in [0.0, -1.0, f32::NAN, f32::INFINITY, f32::MIN_POSITIVE, 1e30] {
+        for v in [
+            eyring.traction_n(bad, l, b, p_h, h),
+            eyring.traction_n(q, l, b, p_h, bad),
+            eyring.traction_n(q, l, b, bad, h),
+            traction::mean_stress_ratio(bad, ln_l, z),
+            traction::mean_stress_ratio(ln_m, ln_l, bad),
+        ] {
+            assert!(v.is_finite() && v >= 0.0, "{bad}: {v}");
+        }
+    }
 }
 
 /// The pressure zone is Hertz's for an elastohydrodynamic contact, the blend's rigid width

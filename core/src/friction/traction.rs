@@ -4,26 +4,6 @@
 
 use crate::math::{exp, ln, max, min, select, sqrt};
 
-/// Nodes cos θ_i and weights w_i·cos θ_i of the 4-point Gauss–Legendre rule on θ ∈ [0, π/2]
-/// for ∫₀^{π/2} g(p_max·cos θ)·cos θ dθ = ∫₀¹ g(p_max·√(1 − ξ²)) dξ, the mean of g over a
-/// Hertzian half-width (ξ = sin θ removes the square-root end of the Hertz profile). Against
-/// a 200 001-point trapezoid rule on g = asinh(A·e^{a cos θ}), A ∈ [10⁻⁷, 1], a ∈ [4, 30],
-/// its largest error is 3.6 % (3 nodes: 9.7 %, 5 nodes: 2.1 %).
-const NODES: [(f32, f32); 4] = gauss_nodes();
-
-const fn gauss_nodes() -> [(f32, f32); 4] {
-    // Gauss–Legendre on [−1, 1]: ±0.339 981 04 (weight 0.652 145 15), ±0.861 136 31
-    // (0.347 854 85); θ = (π/4)(1 + x), weight (π/4)·w. cos θ is tabulated (const fn has no
-    // cosine); the values below are cos((π/4)(1 + x)).
-    let q = core::f32::consts::FRAC_PI_4;
-    [
-        (0.994_058_5, q * 0.347_854_85 * 0.994_058_5),
-        (0.868_624_1, q * 0.652_145_15 * 0.868_624_1),
-        (0.495_471_6, q * 0.652_145_15 * 0.495_471_6),
-        (0.108_847_2, q * 0.347_854_85 * 0.108_847_2),
-    ]
-}
-
 /// ln y above which asinh y = ln 2y to f32 precision; e^{ln y} is then not formed (it would
 /// overflow f32 at the α·p of a hard EHL contact: up to ≈ 100).
 const LN_LARGE_ARGUMENT: f32 = 20.0;
@@ -39,40 +19,159 @@ fn asinh_of_ln(ln_y: f32) -> f32 {
     )
 }
 
-/// Isothermal Eyring traction (N) of a film of thickness `film_m` carrying the Hertzian
-/// pressure of peak `peak_pressure_pa` over half-width b (`half_width_m`) and length l: the
-/// shear stress τ = τ₀·asinh(η(p)·u_s/(h·τ₀)) with the Barus viscosity η = η₀·e^{αp}
-/// (Johnson & Tevaarwerk, Proc. R. Soc. A 356 (1977) 215–236), integrated over the contact
-/// by a 4-node Gauss–Legendre rule (`NODES`).
-#[allow(clippy::too_many_arguments)]
-pub fn isothermal_eyring_n(
+/// The isothermal Eyring traction of the contacts of one kind at one speed: what
+/// [`IsothermalEyring::traction_n`] needs besides a contact's load and film.
+///
+/// At sliding speed u_s a film of thickness h(x) carries the Eyring shear stress
+/// τ = τ₀·asinh(η(p)·u_s/(h·τ₀)) with the Barus viscosity η = η₀·e^{αp} (Johnson &
+/// Tevaarwerk, Proc. R. Soc. A 356 (1977) 215–236). Over the pressure p_h·P(X) and film
+/// h_c·H(X) of a line contact (X = x/b), which depend on Moes' M and L alone (and weakly on
+/// p_h through the Dowson–Higginson density), the traction per length is b·τ₀·T with
+///
+/// T = ∫ asinh(N·e^{α·p_h·P(X)}/H(X)) dX,  N = η₀·u_s/(h_c·τ₀),
+///
+/// a function T(M, L, N) of the contact's shape, the mean stress ratio. The core reads it from
+/// a table of the numerical solver's T ([`super::traction_table`], [`mean_stress_ratio`]):
+/// the light, nearly rigid contacts, whose pressure is far lower and wider than Hertz's, are
+/// then as right as the elastohydrodynamic ones (docs/physics.md §8.3).
+#[derive(Clone, Copy, Debug)]
+pub struct IsothermalEyring {
     eyring_stress_pa: f32,
-    viscosity_pa_s: f32,
     pressure_viscosity_pa_inv: f32,
-    sliding_speed_m_s: f32,
-    film_m: f32,
-    peak_pressure_pa: f32,
-    half_width_m: f32,
-    length_m: f32,
-) -> f32 {
-    let ln_newtonian = ln(viscosity_pa_s * sliding_speed_m_s / (film_m * eyring_stress_pa));
-    let a = pressure_viscosity_pa_inv * peak_pressure_pa;
-    let mean: f32 = NODES
-        .iter()
-        .map(|&(c, w)| w * asinh_of_ln(ln_newtonian + a * c))
-        .sum();
-    // ∫ over −b … b is twice the half-width mean.
-    2.0 * half_width_m * length_m * eyring_stress_pa * mean
+    /// ln(E′·R) + ½·ln 2U (U = η₀·u/(E′·R)): ln M = ln w − this, w the load per length.
+    ln_m_offset: f32,
+    /// ln L = ln(α·E′) + ¼·ln 2U.
+    ln_l: f32,
+    /// ln(η₀·u_s/τ₀) (ln m): ln N = this − ln h_c.
+    ln_newtonian_film: f32,
 }
 
-/// Coefficient c of the pressure-zone widening ([`pressure_zone_widening`]): the zone's
-/// rigid half-width is b_r with b_r² = c·R·h/(α·p_h), blended with Hertz's b as
-/// b_eff = (b⁸ + b_r⁸)^{1/8} (b_eff = b to 10⁻³ where b_r < 0.4·b, b_r where b_r > 2.5·b).
-/// c and the exponent 8 are fitted to the isothermal Eyring traction integrated over the
-/// numerical solver's pressure and film (`bearing_ehl::traction`) for 240 contacts of the
-/// network's domain at slide-to-roll ratios 0.3–10 %, none of them among the contacts the
-/// accuracy test reports:
-/// `cargo test --release -p bearing-tests --test friction_eyring -- --ignored --nocapture`
+impl IsothermalEyring {
+    /// For Eyring stress τ₀ (`eyring_stress_pa`), lubricant η₀ and α, entrainment speed u
+    /// (`rolling_speed_m_s`, > 0), sliding speed u_s and the contact's reduced radius R and
+    /// modulus E′.
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        eyring_stress_pa: f32,
+        viscosity_pa_s: f32,
+        pressure_viscosity_pa_inv: f32,
+        rolling_speed_m_s: f32,
+        sliding_speed_m_s: f32,
+        reduced_radius_m: f32,
+        reduced_modulus_pa: f32,
+    ) -> Self {
+        let er = reduced_modulus_pa * reduced_radius_m;
+        let ln_two_u = ln(2.0 * viscosity_pa_s * rolling_speed_m_s / er);
+        Self {
+            eyring_stress_pa,
+            pressure_viscosity_pa_inv,
+            ln_m_offset: ln(er) + 0.5 * ln_two_u,
+            ln_l: ln(pressure_viscosity_pa_inv * reduced_modulus_pa) + 0.25 * ln_two_u,
+            ln_newtonian_film: ln(viscosity_pa_s * sliding_speed_m_s / eyring_stress_pa),
+        }
+    }
+
+    /// The traction (N) of a contact of length `length_m` l whose film carries `load_n` with
+    /// Hertz half-width `half_width_m` b and peak pressure `peak_pressure_pa` p_h, at central
+    /// film `film_m` h_c: l·b·τ₀·T(M, L, N). Two logarithms, an exponential and 64 table
+    /// nodes, for every input.
+    pub fn traction_n(
+        &self,
+        load_n: f32,
+        length_m: f32,
+        half_width_m: f32,
+        peak_pressure_pa: f32,
+        film_m: f32,
+    ) -> f32 {
+        let ln_m = ln(load_n / length_m) - self.ln_m_offset;
+        let ln_newtonian = self.ln_newtonian_film - ln(film_m);
+        let z = ln_newtonian + self.pressure_viscosity_pa_inv * peak_pressure_pa;
+        length_m * half_width_m * self.eyring_stress_pa * mean_stress_ratio(ln_m, self.ln_l, z)
+    }
+}
+
+/// Catmull–Rom weights of the four nodes k − 1 … k + 2 at t ∈ [0, 1] between k and k + 1, and
+/// of their slope (per node step).
+fn catmull_rom(t: f32) -> ([f32; 4], [f32; 4]) {
+    let (t2, t3) = (t * t, t * t * t);
+    (
+        [
+            0.5 * (-t3 + 2.0 * t2 - t),
+            0.5 * (3.0 * t3 - 5.0 * t2 + 2.0),
+            0.5 * (-3.0 * t3 + 4.0 * t2 + t),
+            0.5 * (t3 - t2),
+        ],
+        [
+            0.5 * (-3.0 * t2 + 4.0 * t - 1.0),
+            0.5 * (9.0 * t2 - 10.0 * t),
+            0.5 * (-9.0 * t2 + 8.0 * t + 1.0),
+            0.5 * (3.0 * t2 - 2.0 * t),
+        ],
+    )
+}
+
+/// Cell k ∈ [1, nodes − 3] and position t ∈ [0, 1] in it of `x` on the axis of first node and
+/// step `axis`, clamped to [node 1, node nodes − 2] (where the four nodes k − 1 … k + 2 exist);
+/// NaN to node 1. Also the clamped coordinate.
+fn cell(x: f32, axis: (f32, f32), nodes: usize) -> (usize, f32, f32) {
+    let f = min(max((x - axis.0) / axis.1, 1.0), (nodes - 2) as f32);
+    // f ∈ [1, nodes − 2]: the cast takes its integer part.
+    let k = crate::math::min_index(f as usize, nodes - 3);
+    (k, f - k as f32, axis.0 + f * axis.1)
+}
+
+/// How far above the table's last z [`mean_stress_ratio`] extrapolates.
+const MAX_Z_ABOVE_TABLE: f32 = 1000.0;
+
+/// The mean stress ratio T of [`IsothermalEyring`] at Moes' ln M, ln L and z = ln N + α·p_h:
+/// Catmull–Rom tricubic in the table of ln T ([`super::traction_table`]), which covers the
+/// film network's domain and its margin. Outside the table's (ln M, ln L) the nearest edge
+/// node holds. Below the table's z the film is Newtonian everywhere (T ∝ N: ln T continues
+/// with slope 1); above it T continues linearly in z with the table's last slope (where
+/// asinh y = ln 2y the stress rises by τ₀ per unit of ln N over the saturated zone).
+pub fn mean_stress_ratio(ln_m: f32, ln_l: f32, z: f32) -> f32 {
+    use super::traction_table::{
+        LN_L, LN_M, LN_MEAN_STRESS_RATIO, LN_T_OFFSET, LN_T_STEP, L_NODES, M_NODES, Z, Z_NODES,
+    };
+    let (i, tm, _) = cell(ln_m, LN_M, M_NODES);
+    let (j, tl, _) = cell(ln_l, LN_L, L_NODES);
+    let (k, tz, zc) = cell(z, Z, Z_NODES);
+    let (wm, _) = catmull_rom(tm);
+    let (wl, _) = catmull_rom(tl);
+    let (wz, dwz) = catmull_rom(tz);
+    // Σ over the 4 × 4 (M, L) nodes of their weight times their four z nodes.
+    let mut along_z = [0.0_f32; 4];
+    for (a, wa) in wm.iter().enumerate() {
+        for (b, wb) in wl.iter().enumerate() {
+            let w = wa * wb;
+            let base = ((i + a - 1) * L_NODES + j + b - 1) * Z_NODES + k - 1;
+            // In the table by construction (k + 2 < Z_NODES, i + 2 < M_NODES, j + 2 < L_NODES).
+            let codes = LN_MEAN_STRESS_RATIO.get(base..base + 4).unwrap_or(&[0; 4]);
+            for (acc, &code) in along_z.iter_mut().zip(codes) {
+                *acc += w * f32::from(code);
+            }
+        }
+    }
+    let dot = |w: &[f32; 4]| {
+        w[0] * along_z[0] + w[1] * along_z[1] + w[2] * along_z[2] + w[3] * along_z[3]
+    };
+    // The weights of each axis sum to 1, so the offset adds once.
+    let ln_t = LN_T_OFFSET + LN_T_STEP * dot(&wz);
+    let slope = LN_T_STEP * dot(&dwz) / Z.1;
+    let below = min(z - zc, 0.0);
+    // Capped where no contact reaches (N = e^1000 above the table) so that T stays finite.
+    let above = min(max(z - zc, 0.0), MAX_Z_ABOVE_TABLE);
+    exp(ln_t + below) * (1.0 + slope * above)
+}
+
+/// Coefficient c of the pressure-zone widening ([`pressure_zone_widening`]) of the thermal
+/// traction's zone: the zone's rigid half-width is b_r with b_r² = c·R·h/(α·p_h), blended with
+/// Hertz's b as b_eff = (b⁸ + b_r⁸)^{1/8} (b_eff = b to 10⁻³ where b_r < 0.4·b, b_r where
+/// b_r > 2.5·b). c and the exponent 8 are fitted so that the isothermal Eyring traction over
+/// the widened Hertz zone matches the one integrated over the numerical solver's pressure and
+/// film (`bearing_ehl::traction`) for 240 contacts of the network's domain at slide-to-roll
+/// ratios 0.3–10 %:
+/// `cargo test --release -p bearing-tests --test friction_eyring -- --ignored fit_pressure_zone_widening --nocapture`
 /// (docs/physics.md §8.3).
 pub const WIDENING_COEFFICIENT: f32 = 5.0;
 

@@ -329,6 +329,16 @@ pub fn select(condition: bool, a: f32, b: f32) -> f32 {
     f32::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
 }
 
+/// The smaller of two indices (`Ord::min` without its generic call).
+#[inline(always)]
+pub(crate) fn min_index(a: usize, b: usize) -> usize {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
 /// The larger of `a` and `b`; `b` when `a` is NaN. A compare and a select: no library call
 /// (ARMv7E-M has no `vmaxnm`, so `f32::max` becomes a call to `fmaxf`).
 #[inline(always)]

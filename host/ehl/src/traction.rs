@@ -63,3 +63,14 @@ pub fn eyring_traction_n(
     }
     force_per_length * length_m
 }
+
+/// The mean Eyring stress ratio T = (1/(b·τ₀))·∫τ dx of a solution at the Newtonian stress
+/// ratio N = η₀·u_s/(h_c·τ₀) = e^`ln_newtonian` (b the Hertz half-width, h_c the central film):
+/// the isothermal traction per length is b·τ₀·T. With the viscosity law `law`, T depends on
+/// the solution's Moes M and L and on N (and, through the Dowson–Higginson density, weakly on
+/// p_h): the quantity the core tabulates (docs/physics.md §8.3).
+pub fn mean_stress_ratio(sol: &EhlSolution, law: ViscosityLaw, ln_newtonian: f64) -> f64 {
+    // τ₀ = 1 Pa and l = 1 m: u_s = N·h_c/η₀.
+    let sliding = ln_newtonian.exp() * sol.central_film_m / sol.case.viscosity_pa_s;
+    eyring_traction_n(sol, law, 1.0, sliding, 1.0) / sol.hertz_half_width_m
+}
