@@ -125,8 +125,9 @@ const MAX_Z_ABOVE_TABLE: f32 = 1000.0;
 
 /// The mean stress ratio T of [`IsothermalEyring`] at Moes' ln M, ln L and z = ln N + α·p_h:
 /// Catmull–Rom tricubic in the table of ln T ([`super::traction_table`]), which covers the
-/// film network's domain and its margin. Outside the table's (ln M, ln L) the nearest edge
-/// node holds. Below the table's z the film is Newtonian everywhere (T ∝ N: ln T continues
+/// film network's domain and its margin. Outside the interpolation's range of (ln M, ln L)
+/// (node 1 to node n − 2 of each axis) T is read at the range's nearest point: a light roller
+/// at high speed (ln M < −3.25) then reads low (docs/physics.md §8.3). Below the table's z the film is Newtonian everywhere (T ∝ N: ln T continues
 /// with slope 1); above it T continues linearly in z with the table's last slope (where
 /// asinh y = ln 2y the stress rises by τ₀ per unit of ln N over the saturated zone).
 pub fn mean_stress_ratio(ln_m: f32, ln_l: f32, z: f32) -> f32 {
