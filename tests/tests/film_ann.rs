@@ -1,5 +1,5 @@
-//! The film network across crates: the generated weights match the committed model file, the
-//! core's f32 and integer networks agree with the host's f64 network and integer mirror, the
+//! The film network across crates: the generated weights match the committed model file and the
+//! shared tanh table the quantiser's, the core's f32 and integer networks agree with the host's f64 network and integer mirror, the
 //! integer network stays within the bounds of the f32 one, and the pipeline model meets
 //! the accuracy targets on its held-out test set.
 //!
@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 use bearing_core::film::ann::{self, AnnF32, AnnInt};
 use bearing_core::film::{FilmModel, FilmSource};
-use bearing_train::ann::export::{fingerprint, render};
+use bearing_train::ann::export::{fingerprint, render, render_tanh_table, TANH_TABLE_PATH};
 use bearing_train::ann::metrics::Metrics;
 use bearing_train::ann::model::ModelFile;
 use bearing_train::ann::pipeline::{load_samples, predict_int, split_samples};
@@ -65,6 +65,21 @@ fn generated_weights_match_the_model_file() {
         fingerprint(&m).unwrap(),
         ann::model_weights::MODEL_FINGERPRINT
     );
+}
+
+/// The core's tanh table is the quantiser's: regenerating it gives the committed source, byte
+/// for byte; and both compiled networks, line and point contact, use that one table (the same
+/// static, not a copy).
+#[test]
+fn shared_tanh_table_matches_the_quantiser() {
+    let committed = std::fs::read_to_string(root().join(TANH_TABLE_PATH)).unwrap();
+    assert!(
+        render_tanh_table().unwrap() == committed,
+        "{TANH_TABLE_PATH} is stale: run `bearing export --tanh-table`"
+    );
+    let shared = &ann::tanh_table::TANH_LUT;
+    assert!(std::ptr::eq(&ann::model_weights::LUT, shared));
+    assert!(std::ptr::eq(&ann::point_model_weights::LUT, shared));
 }
 
 /// The core's f32 network (f32 features, fixed-cost ln/exp/tanh) against the host's f64

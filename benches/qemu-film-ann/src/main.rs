@@ -23,8 +23,16 @@ use cortex_m_semihosting::{debug, hprintln};
 
 #[panic_handler]
 fn panic(_: &core::panic::PanicInfo) -> ! {
-    debug::exit(debug::EXIT_FAILURE);
-    loop {}
+    exit(debug::EXIT_FAILURE)
+}
+
+/// Ends QEMU through semihosting with `status`. QEMU stops at the call; should a host ignore
+/// it, the core sleeps until an interrupt, for ever.
+fn exit(status: debug::ExitStatus) -> ! {
+    debug::exit(status);
+    loop {
+        cortex_m::asm::wfi();
+    }
 }
 
 static CASES: [ContactInput; 22] = [
@@ -343,8 +351,7 @@ fn count<T>(f: impl FnOnce() -> T, empty: u32) -> u32 {
 #[entry]
 fn main() -> ! {
     let Some(mut peripherals) = cortex_m::Peripherals::take() else {
-        debug::exit(debug::EXIT_FAILURE);
-        loop {}
+        exit(debug::EXIT_FAILURE)
     };
     counter::start(&mut peripherals.SYST);
     let calibration = counter::calibrate().instructions;
@@ -378,10 +385,9 @@ fn main() -> ! {
             i, int_film, f32_film, int_net, f32_net, hd, f.source as u8, f.central_m
         );
     }
-    debug::exit(if calibration == 1000 {
+    exit(if calibration == 1000 {
         debug::EXIT_SUCCESS
     } else {
         debug::EXIT_FAILURE
-    });
-    loop {}
+    })
 }

@@ -164,3 +164,22 @@ fn export_writes_the_point_model() {
         std::fs::read_to_string(root.join("core/src/film/ann/point_model_weights.rs")).unwrap();
     assert!(std::fs::read_to_string(&out).unwrap() == committed);
 }
+
+/// `bearing export --tanh-table` writes the committed `core/src/film/ann/tanh_table.rs` byte
+/// for byte, and is refused together with `--model`, naming both flags.
+#[test]
+fn export_writes_the_shared_tanh_table() {
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("tanh_table.rs");
+    let (ok, _, err) = bearing(&["export", "--tanh-table", "--out", out.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    let committed = std::fs::read_to_string(root.join("core/src/film/ann/tanh_table.rs")).unwrap();
+    assert!(std::fs::read_to_string(&out).unwrap() == committed);
+    let model = root.join("data/ann/numerical_model.json");
+    let (ok, _, err) = bearing(&["export", "--tanh-table", "--model", model.to_str().unwrap()]);
+    assert!(
+        !ok && err.contains("--tanh-table") && err.contains("--model"),
+        "{err}"
+    );
+}

@@ -6,6 +6,11 @@
 //! The output depends only on the network, its normalisation, quantisation and domain (not on
 //! the metrics), is deterministic, and is compared byte for byte with the committed file by a
 //! test.
+//!
+//! The tanh activation table depends only on the quantiser's table input scale, so the core
+//! holds it once, in `core/src/film/ann/tanh_table.rs` ([`render_tanh_table`]); a network whose
+//! quantised table is that one, value for value, refers to it, and any other (a logistic
+//! network, or another input scale) gets its own table in its weights file.
 
 use std::fmt::Write;
 use std::path::Path;
@@ -19,6 +24,10 @@ use super::model::ModelFile;
 use super::quant::Quantised;
 use super::train::Trained;
 use crate::dataset::point_domain::PointDomain;
+use tanh_table::write_table_rows;
+pub use tanh_table::{render_tanh_table, shares_core_tanh_table, TANH_TABLE_PATH};
+
+mod tanh_table;
 
 /// Where the line contact's network is generated in the core.
 pub const LINE_WEIGHTS_PATH: &str = "core/src/film/ann/model_weights.rs";
@@ -65,7 +74,8 @@ impl ContactModel {
         }
     }
 
-    /// The integer layers (for `bearing export`'s note on the host's requantisation path).
+    /// The integer layers (for `bearing export`'s notes on the host's requantisation path and
+    /// on the activation table).
     pub fn quantised(&self) -> Option<&Quantised> {
         match self {
             Self::Line(m) => m.quantised.as_ref(),
@@ -129,6 +139,17 @@ fn exportable<D>(model: &ModelFile<D>) -> Result<(&Quantised, &'static str)> {
         }
     };
     Ok((q, target))
+}
+
+/// The `use` of the integer layer types: the table types only for a network that holds its
+/// own table.
+fn write_int_use(o: &mut String, q: &Quantised) -> Result<()> {
+    if q.lut.is_empty() || shares_core_tanh_table(q) {
+        writeln!(o, "use super::int::DenseInt;")?;
+    } else {
+        writeln!(o, "use super::int::{{DenseInt, Lut, LutLanes}};")?;
+    }
+    Ok(())
 }
 
 /// The file's doc header: provenance and shape.
@@ -286,7 +307,7 @@ pub fn render(model: &ModelFile) -> Result<String> {
     let mut o = String::new();
     write_header(&mut o, model, n_in, LINE_WEIGHTS_PATH)?;
     writeln!(o, "use super::float::{{Activation, DenseF32}};")?;
-    writeln!(o, "use super::int::{{DenseInt, Lut, LutLanes}};")?;
+    write_int_use(&mut o, q)?;
     writeln!(o, "use super::{{DomainLimits, InputSet, TargetForm}};")?;
     writeln!(o)?;
     write_identity(
@@ -345,7 +366,7 @@ pub fn render_point(model: &ModelFile<PointDomain>) -> Result<String> {
     let mut o = String::new();
     write_header(&mut o, model, n_in, POINT_WEIGHTS_PATH)?;
     writeln!(o, "use super::float::{{Activation, DenseF32}};")?;
-    writeln!(o, "use super::int::{{DenseInt, Lut, LutLanes}};")?;
+    write_int_use(&mut o, q)?;
     writeln!(o, "use super::point::{{PointDomainLimits, PointInputSet}};")?;
     writeln!(o, "use super::TargetForm;")?;
     writeln!(o)?;
@@ -473,7 +494,18 @@ fn write_layers(o: &mut String, t: &Trained, q: &Quantised) -> Result<()> {
         writeln!(o, "    {},", l.shift)?;
         writeln!(o, ");")?;
     }
-    if !q.lut.is_empty() {
+    if shares_core_tanh_table(q) {
+        writeln!(o)?;
+        writeln!(
+            o,
+            "/// Activation table: the core's tanh table (`tanh_table`), input scale {:e}.",
+            q.lut_input_scale
+        )?;
+        writeln!(
+            o,
+            "pub use super::tanh_table::{{TANH_LUT as LUT, TANH_LUT_LANES as LUT_LANES}};"
+        )?;
+    } else if !q.lut.is_empty() {
         writeln!(o)?;
         writeln!(
             o,
@@ -481,17 +513,7 @@ fn write_layers(o: &mut String, t: &Trained, q: &Quantised) -> Result<()> {
             q.lut_input_scale
         )?;
         writeln!(o, "pub static LUT: Lut = [")?;
-        for chunk in q.lut.chunks(16) {
-            writeln!(
-                o,
-                "    {},",
-                chunk
-                    .iter()
-                    .map(|v| v.to_string())
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            )?;
-        }
+        write_table_rows(o, &q.lut)?;
         writeln!(o, "];")?;
         writeln!(
             o,

@@ -80,8 +80,18 @@ fn multiplier_shift(ratio: f64) -> Result<(i32, u32)> {
     Ok((m as i32, shift))
 }
 
-/// The activation table for `s_z`.
-fn table(activation: Activation, s_z: f64) -> Vec<i16> {
+/// The table input scale `s_z` of a hidden activation (module doc); 0 for ReLU, which has
+/// no table.
+pub fn table_input_scale(activation: Activation) -> f64 {
+    match activation {
+        Activation::Tanh => 8.0 / 32768.0,
+        Activation::Logistic => 16.0 / 32768.0,
+        Activation::Relu => 0.0,
+    }
+}
+
+/// The activation table for `s_z`: `round(32767·f(x_k))`, `x_k = (64k − 32768)·s_z`.
+pub fn table(activation: Activation, s_z: f64) -> Vec<i16> {
     (0..LUT_LEN)
         .map(|k| {
             let x = ((64 * k) as f64 - 32768.0) * s_z;
@@ -98,11 +108,7 @@ pub fn quantise(net: &Mlp, weight_bits: u32, calibration: &[Vec<f64>]) -> Result
         bail!("weight bits must be 8 or 16, got {weight_bits}");
     }
     let qmax = ((1i64 << (weight_bits - 1)) - 1) as f64;
-    let s_z = match net.activation {
-        Activation::Tanh => 8.0 / 32768.0,
-        Activation::Logistic => 16.0 / 32768.0,
-        Activation::Relu => 0.0,
-    };
+    let s_z = table_input_scale(net.activation);
     // Per-layer activation ranges on the calibration set (f64 network).
     let n_layers = net.layers.len();
     let mut max_abs = vec![0.0f64; n_layers];
