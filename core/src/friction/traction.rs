@@ -90,24 +90,26 @@ impl IsothermalEyring {
     }
 }
 
-/// Catmull–Rom weights of the four nodes k − 1 … k + 2 at t ∈ [0, 1] between k and k + 1, and
-/// of their slope (per node step).
-fn catmull_rom(t: f32) -> ([f32; 4], [f32; 4]) {
+/// Catmull–Rom weights of the four nodes k − 1 … k + 2 at t ∈ [0, 1] between k and k + 1.
+fn catmull_rom(t: f32) -> [f32; 4] {
     let (t2, t3) = (t * t, t * t * t);
-    (
-        [
-            0.5 * (-t3 + 2.0 * t2 - t),
-            0.5 * (3.0 * t3 - 5.0 * t2 + 2.0),
-            0.5 * (-3.0 * t3 + 4.0 * t2 + t),
-            0.5 * (t3 - t2),
-        ],
-        [
-            0.5 * (-3.0 * t2 + 4.0 * t - 1.0),
-            0.5 * (9.0 * t2 - 10.0 * t),
-            0.5 * (-9.0 * t2 + 8.0 * t + 1.0),
-            0.5 * (3.0 * t2 - 2.0 * t),
-        ],
-    )
+    [
+        0.5 * (-t3 + 2.0 * t2 - t),
+        0.5 * (3.0 * t3 - 5.0 * t2 + 2.0),
+        0.5 * (-3.0 * t3 + 4.0 * t2 + t),
+        0.5 * (t3 - t2),
+    ]
+}
+
+/// The derivatives in t of [`catmull_rom`]'s weights: the slope per node step.
+fn catmull_rom_slope(t: f32) -> [f32; 4] {
+    let t2 = t * t;
+    [
+        0.5 * (-3.0 * t2 + 4.0 * t - 1.0),
+        0.5 * (9.0 * t2 - 10.0 * t),
+        0.5 * (-9.0 * t2 + 8.0 * t + 1.0),
+        0.5 * (3.0 * t2 - 2.0 * t),
+    ]
 }
 
 /// Cell k ∈ [1, nodes − 3] and position t ∈ [0, 1] in it of `x` on the axis of first node and
@@ -127,9 +129,10 @@ const MAX_Z_ABOVE_TABLE: f32 = 1000.0;
 /// Catmull–Rom tricubic in the table of ln T ([`super::traction_table`]), which covers the
 /// film network's domain and its margin. Outside the interpolation's range of (ln M, ln L)
 /// (node 1 to node n − 2 of each axis) T is read at the range's nearest point: a light roller
-/// at high speed (ln M < −3.25) then reads low (docs/physics.md §8.3). Below the table's z the film is Newtonian everywhere (T ∝ N: ln T continues
-/// with slope 1); above it T continues linearly in z with the table's last slope (where
-/// asinh y = ln 2y the stress rises by τ₀ per unit of ln N over the saturated zone).
+/// at high speed (ln M < −3.25) then reads low (docs/physics.md §8.3). Below the table's z
+/// the film is Newtonian everywhere (T ∝ N: ln T continues with slope 1); above it T continues
+/// linearly in z with the table's last slope (where asinh y = ln 2y the stress rises by τ₀ per
+/// unit of ln N over the saturated zone).
 pub fn mean_stress_ratio(ln_m: f32, ln_l: f32, z: f32) -> f32 {
     use super::traction_table::{
         LN_L, LN_M, LN_MEAN_STRESS_RATIO, LN_T_OFFSET, LN_T_STEP, L_NODES, M_NODES, Z, Z_NODES,
@@ -137,9 +140,12 @@ pub fn mean_stress_ratio(ln_m: f32, ln_l: f32, z: f32) -> f32 {
     let (i, tm, _) = cell(ln_m, LN_M, M_NODES);
     let (j, tl, _) = cell(ln_l, LN_L, L_NODES);
     let (k, tz, zc) = cell(z, Z, Z_NODES);
-    let (wm, _) = catmull_rom(tm);
-    let (wl, _) = catmull_rom(tl);
-    let (wz, dwz) = catmull_rom(tz);
+    let (wm, wl, wz, dwz) = (
+        catmull_rom(tm),
+        catmull_rom(tl),
+        catmull_rom(tz),
+        catmull_rom_slope(tz),
+    );
     // Σ over the 4 × 4 (M, L) nodes of their weight times their four z nodes.
     let mut along_z = [0.0_f32; 4];
     for (a, wa) in wm.iter().enumerate() {
