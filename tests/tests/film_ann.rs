@@ -1,7 +1,9 @@
-//! The film network across crates: the generated weights match the committed model file and the
-//! shared tanh table the quantiser's, the core's f32 and integer networks agree with the host's f64 network and integer mirror, the
-//! integer network stays within the bounds of the f32 one, and the pipeline model meets
-//! the accuracy targets on its held-out test set.
+//! The film network across crates: both compiled networks share one tanh table, the core's f32
+//! and integer networks agree with the host's f64 network and integer mirror, the integer
+//! network stays within the accuracy bounds of the f32 one, and the pipeline model meets the
+//! accuracy targets on its held-out test set. That the generated weights and the tanh table are
+//! the committed model file's and the quantiser's, byte for byte, is `cargo xtask generate
+//! --check`'s job.
 //!
 //! The core holds the model trained on numerical EHL solutions (`data/ann/numerical_*`, Roelands +
 //! Dowson–Higginson, 801 nodes; 5000 cases, all solved; see `data/ann/README.md`). The
@@ -12,7 +14,6 @@ use std::path::PathBuf;
 
 use bearing_core::film::ann::{self, AnnF32, AnnInt};
 use bearing_core::film::{FilmModel, FilmSource};
-use bearing_train::ann::export::{fingerprint, render, render_tanh_table, TANH_TABLE_PATH};
 use bearing_train::ann::metrics::Metrics;
 use bearing_train::ann::model::ModelFile;
 use bearing_train::ann::pipeline::{load_samples, predict_int, split_samples};
@@ -49,34 +50,10 @@ fn core_films<M: FilmModel>(m: &M, s: &Samples) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// Regenerating the weights from the committed model file gives the committed source, byte for
-/// byte, and the core was compiled from that model (fingerprint).
+/// Both compiled networks, line and point contact, use the one tanh table (the same static,
+/// not a copy).
 #[test]
-fn generated_weights_match_the_model_file() {
-    let m = model();
-    let generated = render(&m).unwrap();
-    let committed =
-        std::fs::read_to_string(root().join("core/src/film/ann/model_weights.rs")).unwrap();
-    assert!(
-        generated == committed,
-        "core/src/film/ann/model_weights.rs is stale: run `bearing export --model {CORE_MODEL}`"
-    );
-    assert_eq!(
-        fingerprint(&m).unwrap(),
-        ann::model_weights::MODEL_FINGERPRINT
-    );
-}
-
-/// The core's tanh table is the quantiser's: regenerating it gives the committed source, byte
-/// for byte; and both compiled networks, line and point contact, use that one table (the same
-/// static, not a copy).
-#[test]
-fn shared_tanh_table_matches_the_quantiser() {
-    let committed = std::fs::read_to_string(root().join(TANH_TABLE_PATH)).unwrap();
-    assert!(
-        render_tanh_table().unwrap() == committed,
-        "{TANH_TABLE_PATH} is stale: run `bearing export --tanh-table`"
-    );
+fn both_networks_share_the_tanh_table() {
     let shared = &ann::tanh_table::TANH_LUT;
     assert!(std::ptr::eq(&ann::model_weights::LUT, shared));
     assert!(std::ptr::eq(&ann::point_model_weights::LUT, shared));

@@ -1,5 +1,5 @@
-//! The point-contact film models of the core against independent references: the generated
-//! weights against the committed model file; the f32 Hertz ellipticity and Hamrock–Dowson
+//! The point-contact film models of the core against independent references (the generated
+//! weights against the committed model file: `cargo xtask generate --check`): the f32 Hertz ellipticity and Hamrock–Dowson
 //! films against the host's f64 formulas (`bearing_ehl::point`); the f32 and integer networks
 //! against the solver's Richardson films on the dataset's held-out test rows (the training
 //! split); the domain guard against the host's `PointDomain::check`; hostile inputs.
@@ -7,14 +7,13 @@
 use std::path::PathBuf;
 
 use bearing_core::film::ann::point::{prepare, served_loads};
-use bearing_core::film::ann::{point_model_weights, PointAnnF32, PointAnnInt};
+use bearing_core::film::ann::{PointAnnF32, PointAnnInt};
 use bearing_core::film::point::hertz::ellipse_shape;
 use bearing_core::film::point::{groups, HamrockDowson};
 use bearing_core::film::{FilmModel, FilmSource, PointContactInput};
 use bearing_ehl::point::formulas::{hamrock_dowson_central_film_m, hamrock_dowson_min_film_m};
 use bearing_ehl::point::hertz::{elliptic_integrals, ellipticity_of_radius_ratio};
 use bearing_ehl::point::PointContactCase;
-use bearing_train::ann::export::{fingerprint_of, render_point, POINT_WEIGHTS_PATH};
 use bearing_train::ann::metrics::Metrics;
 use bearing_train::ann::model::ModelFile;
 use bearing_train::ann::pipeline::{load_contact_samples, split_samples};
@@ -126,22 +125,6 @@ fn random_contacts(seed: u64, n: usize, spread: f64, max_ratio: f64) -> Vec<Poin
             c
         })
         .collect()
-}
-
-/// Regenerating the weights from the committed model file gives the committed source, byte
-/// for byte, and the core was compiled from that model (fingerprint).
-#[test]
-fn generated_point_weights_match_the_model_file() {
-    let m = model();
-    let committed = std::fs::read_to_string(root().join(POINT_WEIGHTS_PATH)).unwrap();
-    assert!(
-        render_point(&m).unwrap() == committed,
-        "{POINT_WEIGHTS_PATH} is stale: run `bearing export --model {POINT_MODEL}`"
-    );
-    assert_eq!(
-        fingerprint_of(&m).unwrap(),
-        point_model_weights::MODEL_FINGERPRINT
-    );
 }
 
 /// The core's f32 ellipticity and second elliptic integral against the host's bisection on

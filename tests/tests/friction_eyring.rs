@@ -10,58 +10,11 @@
 //! (Evans–Johnson) traction, compared too, at slide-to-roll ratios 0.3–10 % and Eyring
 //! stresses 2–20 MPa.
 
-use bearing_core::film::ann::model_weights::DOMAIN;
-use bearing_core::film::ann::AnnF32;
 use bearing_core::friction::traction::IsothermalEyring;
-use bearing_core::{ContactInput, FilmModel, FilmSource, FrictionDesign};
-use bearing_ehl::traction::{eyring_traction_n, mean_stress_ratio};
-use bearing_ehl::{ContactCase, SolverOptions, ViscosityLaw};
-
-/// The i-th point of the Halton sequence in base `base`, in (0, 1).
-fn halton(mut i: u64, base: u64) -> f64 {
-    let (mut f, mut r) = (1.0, 0.0);
-    while i > 0 {
-        f /= base as f64;
-        r += f * (i % base) as f64;
-        i /= base;
-    }
-    r
-}
-
-/// Contacts spread over the network's training domain (log-uniform in each of its seven
-/// inputs by a Halton sequence from index `first`), `count` of those the network's own guard
-/// accepts.
-fn domain_contacts(first: u64, count: usize) -> Vec<ContactInput> {
-    const BASES: [u64; 7] = [2, 3, 5, 7, 11, 13, 17];
-    let mut out = Vec::new();
-    for i in first..first + 50_000 {
-        let v: Vec<f32> = DOMAIN
-            .inputs
-            .iter()
-            .zip(BASES)
-            .map(|(&[lo, hi], base)| {
-                let (lo, hi) = (f64::from(lo) * 1.0001, f64::from(hi) * 0.9999);
-                (lo.ln() + halton(i, base) * (hi / lo).ln()).exp() as f32
-            })
-            .collect();
-        let c = ContactInput {
-            load_n: v[0],
-            entrainment_speed_m_s: v[1],
-            reduced_radius_m: v[2],
-            reduced_modulus_pa: v[3],
-            pressure_viscosity_pa_inv: v[4],
-            viscosity_pa_s: v[5],
-            length_m: v[6],
-        };
-        if AnnF32.film(&c).source == FilmSource::NetworkF32 {
-            out.push(c);
-        }
-        if out.len() == count {
-            break;
-        }
-    }
-    out
-}
+use bearing_core::{ContactInput, FrictionDesign};
+use bearing_ehl::traction::eyring_traction_n;
+use bearing_ehl::{ContactCase, ViscosityLaw};
+use bearing_train::traction_table::{barus, case_of, domain_contacts, node_row};
 
 /// (median, 95th percentile) of the values.
 fn median_p95(mut v: Vec<f64>) -> (f64, f64) {
@@ -203,27 +156,6 @@ fn check_at(
     );
 }
 
-/// The EHL case of a contact.
-fn case_of(c: &ContactInput) -> ContactCase {
-    ContactCase::new(
-        f64::from(c.load_n / c.length_m),
-        f64::from(c.entrainment_speed_m_s),
-        f64::from(c.reduced_radius_m),
-        f64::from(c.reduced_modulus_pa),
-        f64::from(c.pressure_viscosity_pa_inv),
-        f64::from(c.viscosity_pa_s),
-    )
-    .unwrap()
-}
-
-/// The solver options of both the test and the fit: Barus viscosity, as the core's.
-fn barus() -> SolverOptions {
-    SolverOptions {
-        viscosity: ViscosityLaw::Barus,
-        ..SolverOptions::default()
-    }
-}
-
 /// The isothermal Eyring traction (N) of a Hertzian pressure of peak `peak_pa` over half-width
 /// `b` (m) and length `l`, mean of τ₀·asinh(e^{ln N + α·p}) by the 4-point Gauss–Legendre rule
 /// in θ (p = p_peak·cos θ): the model the pressure-zone widening is fitted in.
@@ -321,198 +253,6 @@ fn fit_pressure_zone_widening() {
     }
 }
 
-/// The grid of the core's traction table (`bearing_core::friction::traction_table`): first
-/// node, step and count of ln M, ln L and z = ln N + α·p_h.
-const TABLE_LN_M: (f64, f64, usize) = (-3.5, 0.25, 47);
-const TABLE_LN_L: (f64, f64, usize) = (0.0, 0.25, 22);
-const TABLE_Z: (f64, f64, usize) = (-8.0, 2.0, 57);
-/// The lubricant and contact every node is solved with: α (1/Pa, the middle of the network's
-/// domain), E′ (Pa) and R (m). Only α·p_h and, through the density, p_h matter besides M and L.
-const TABLE_ALPHA_PA_INV: f64 = 1.732e-8;
-const TABLE_MODULUS_PA: f64 = 2.26e11;
-const TABLE_RADIUS_M: f64 = 0.01;
-
-/// The contact of Moes' ln M and ln L at the table's α, E′ and R: u = 10 m/s unless η₀ would
-/// leave [10⁻⁴, 10³] Pa·s.
-fn table_case(ln_m: f64, ln_l: f64) -> Option<ContactCase> {
-    let (alpha, e, r) = (TABLE_ALPHA_PA_INV, TABLE_MODULUS_PA, TABLE_RADIUS_M);
-    let two_u = (ln_l.exp() / (alpha * e)).powi(4);
-    let eta_u = 0.5 * two_u * e * r;
-    let w = ln_m.exp() * two_u.sqrt() * e * r;
-    let eta = (eta_u / 10.0).clamp(1.0e-4, 1.0e3);
-    ContactCase::new(w, eta_u / eta, r, e, alpha, eta).ok()
-}
-
-/// ln T at the z nodes of one (ln M, ln L) node, solved at the table's α; `None` where the
-/// solver refuses or fails.
-fn table_row(ln_m: f64, ln_l: f64) -> Option<Vec<f64>> {
-    let sol = bearing_ehl::solve(&table_case(ln_m, ln_l)?, &barus()).ok()?;
-    let alpha_peak = TABLE_ALPHA_PA_INV * sol.hertz_pressure_pa;
-    let (z0, dz, nz) = TABLE_Z;
-    Some(
-        (0..nz)
-            .map(|k| {
-                let ln_n = z0 + dz * k as f64 - alpha_peak;
-                mean_stress_ratio(&sol, ViscosityLaw::Barus, ln_n).ln()
-            })
-            .collect(),
-    )
-}
-
-/// The (ln M, ln L) nodes the tricubic interpolation reads for contacts of the network's
-/// domain: the 4 × 4 nodes around the cell of each of 200 000 Halton points the guard accepts.
-fn nodes_the_domain_reads() -> Vec<bool> {
-    let (m0, dm, nm) = TABLE_LN_M;
-    let (l0, dl, nl) = TABLE_LN_L;
-    let mut needed = vec![false; nm * nl];
-    for c in domain_contacts(1, 200_000) {
-        let case = case_of(&c);
-        let fm = ((case.moes_m().ln() - m0) / dm).clamp(1.0, (nm - 2) as f64);
-        let fl = ((case.moes_l().ln() - l0) / dl).clamp(1.0, (nl - 2) as f64);
-        let (i, j) = ((fm as usize).min(nm - 3), (fl as usize).min(nl - 3));
-        for a in i - 1..=i + 2 {
-            for b in j - 1..=j + 2 {
-                needed[a * nl + b] = true;
-            }
-        }
-    }
-    needed
-}
-
-/// Regenerates `core/src/friction/traction_table.rs`: every node the domain reads is solved
-/// (the run fails if one does not), the others where α·p_h ≤ 150 and the solver converges;
-/// nodes left unsolved (outside the domain) copy the nearest solved node of lower ln L in their
-/// row, or of lower ln M. ≈ 2 min on 2 cores.
-#[test]
-#[ignore = "regenerates core/src/friction/traction_table.rs; run by hand"]
-fn generate_traction_table() {
-    use rayon::prelude::*;
-    let (m0, dm, nm) = TABLE_LN_M;
-    let (l0, dl, nl) = TABLE_LN_L;
-    let needed = nodes_the_domain_reads();
-    let rows: Vec<Option<Vec<f64>>> = (0..nm * nl)
-        .into_par_iter()
-        .map(|n| {
-            let (ln_m, ln_l) = (m0 + dm * (n / nl) as f64, l0 + dl * (n % nl) as f64);
-            let alpha_peak = (ln_l + 0.5 * ln_m).exp() / (2.0 * std::f64::consts::PI).sqrt();
-            (needed[n] || alpha_peak <= 150.0)
-                .then(|| table_row(ln_m, ln_l))
-                .flatten()
-        })
-        .collect();
-    let missing: Vec<_> = (0..nm * nl)
-        .filter(|&n| needed[n] && rows[n].is_none())
-        .map(|n| (m0 + dm * (n / nl) as f64, l0 + dl * (n % nl) as f64))
-        .collect();
-    assert!(
-        missing.is_empty(),
-        "unsolved (ln M, ln L) nodes the domain reads: {missing:?}"
-    );
-    let mut copied = 0;
-    let values: Vec<f64> = (0..nm * nl)
-        .flat_map(|n| {
-            let (i, j) = (n / nl, n % nl);
-            // The node itself, else the nearest solved one of lower ln L, else of lower ln M.
-            let source = std::iter::once(n)
-                .chain((0..j).rev().map(|b| i * nl + b))
-                .chain((0..i).rev().map(|a| a * nl + j))
-                .find(|&s| rows[s].is_some())
-                .expect("every row has a solved node at ln L = 0");
-            copied += usize::from(source != n);
-            rows[source].clone().unwrap_or_default()
-        })
-        .collect();
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../core/src/friction/traction_table.rs"
-    );
-    let text = render_traction_table(&values);
-    let tmp = format!("{path}.tmp");
-    std::fs::write(&tmp, text).unwrap();
-    std::fs::rename(&tmp, path).unwrap();
-    let solved = rows.iter().filter(|r| r.is_some()).count();
-    println!(
-        "{solved} of {} nodes solved ({} read by the domain), {copied} copied; wrote {path}",
-        nm * nl,
-        needed.iter().filter(|&&n| n).count()
-    );
-}
-
-/// The text of `core/src/friction/traction_table.rs` for ln T at every node, (i·L + j)·Z + k.
-fn render_traction_table(ln_t: &[f64]) -> String {
-    use std::fmt::Write;
-    let lo = ln_t.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = ln_t.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    // i16 codes −32 767 … 32 767 over [lo, hi].
-    let step = (hi - lo) / 65_534.0;
-    let offset = 0.5 * (lo + hi);
-    let (m0, dm, nm) = TABLE_LN_M;
-    let (l0, dl, nl) = TABLE_LN_L;
-    let (z0, dz, nz) = TABLE_Z;
-    let mut s = String::new();
-    let _ = write!(
-        s,
-        "//! GENERATED by `cargo test --release -p bearing-tests --test friction_eyring -- --ignored \
-         generate_traction_table` — do not edit.\n\
-         //!\n\
-         //! ln T, the mean isothermal Eyring stress ratio of a line contact (docs/physics.md §8.3),\n\
-         //! integrated over the numerical solver's pressure and film (Barus viscosity,\n\
-         //! Dowson–Higginson density; α = {TABLE_ALPHA_PA_INV:e} 1/Pa, E′ = {TABLE_MODULUS_PA:e} Pa,\n\
-         //! R = {TABLE_RADIUS_M} m) on a grid of Moes' ln M × ln L × z, z = ln N + α·p_h.\n\n\
-         /// First node and step of ln M.\npub const LN_M: (f32, f32) = ({m0:?}, {dm:?});\n\
-         /// Nodes of ln M.\npub const M_NODES: usize = {nm};\n\
-         /// First node and step of ln L.\npub const LN_L: (f32, f32) = ({l0:?}, {dl:?});\n\
-         /// Nodes of ln L.\npub const L_NODES: usize = {nl};\n\
-         /// First node and step of z = ln N + α·p_h.\npub const Z: (f32, f32) = ({z0:?}, {dz:?});\n\
-         /// Nodes of z.\npub const Z_NODES: usize = {nz};\n\
-         /// ln T of code 0 of [`LN_MEAN_STRESS_RATIO`].\npub const LN_T_OFFSET: f32 = {:?};\n\
-         /// ln T per unit of [`LN_MEAN_STRESS_RATIO`].\npub const LN_T_STEP: f32 = {:?};\n\
-         /// (ln T − [`LN_T_OFFSET`])/[`LN_T_STEP`] at node (i, j, k) of (ln M, ln L, z), index\n\
-         /// (i·[`L_NODES`] + j)·[`Z_NODES`] + k; one line per (i, j).\n\
-         #[rustfmt::skip]\n\
-         pub static LN_MEAN_STRESS_RATIO: [i16; M_NODES * L_NODES * Z_NODES] = [\n",
-        offset as f32,
-        step as f32
-    );
-    for row in ln_t.chunks(nz) {
-        let codes: Vec<String> = row
-            .iter()
-            .map(|v| (((v - offset) / step).round() as i16).to_string())
-            .collect();
-        let _ = writeln!(s, "    {},", codes.join(", "));
-    }
-    s.push_str("];\n");
-    s
-}
-
-/// The committed table is the solver's: nodes spread over the domain's band, re-solved, agree
-/// with their codes to the quantisation step (plus the solver's run-to-run identity).
-#[test]
-fn traction_table_holds_the_solvers_stress_ratio() {
-    use bearing_core::friction::traction_table as t;
-    assert_eq!((t::LN_M.0, t::LN_M.1, t::M_NODES), grid_f32(TABLE_LN_M));
-    assert_eq!((t::LN_L.0, t::LN_L.1, t::L_NODES), grid_f32(TABLE_LN_L));
-    assert_eq!((t::Z.0, t::Z.1, t::Z_NODES), grid_f32(TABLE_Z));
-    let (m0, dm, _) = TABLE_LN_M;
-    let (l0, dl, nl) = TABLE_LN_L;
-    let nz = TABLE_Z.2;
-    for (i, j) in [(2, 18), (12, 8), (20, 3), (24, 14), (34, 6), (44, 3)] {
-        let row = table_row(m0 + dm * i as f64, l0 + dl * j as f64).unwrap();
-        for (k, ln_t) in row.iter().enumerate() {
-            let code = t::LN_MEAN_STRESS_RATIO[(i * nl + j) * nz + k];
-            let stored = f64::from(t::LN_T_OFFSET) + f64::from(code) * f64::from(t::LN_T_STEP);
-            assert!(
-                (stored - ln_t).abs() <= 0.6 * f64::from(t::LN_T_STEP) + 1e-6,
-                "node ({i}, {j}, {k}): stored {stored}, solver {ln_t}"
-            );
-        }
-    }
-}
-
-fn grid_f32(g: (f64, f64, usize)) -> (f32, f32, usize) {
-    (g.0 as f32, g.1 as f32, g.2)
-}
-
 /// What the core's edge value leaves out below the table (docs/physics.md §8.3): the solver's
 /// d ln T/d ln M from ln M = −3.25 (the interpolation's first point) to −4, at ln L = 0.5, 2,
 /// 3.5 and 4.5 and z nodes 0 … 20 (the solver refuses lower M here). ≈ 20 s.
@@ -521,7 +261,7 @@ fn grid_f32(g: (f64, f64, usize)) -> (f32, f32, usize) {
 fn traction_below_the_table() {
     let (edge, below) = (-3.25, -4.0);
     for ln_l in [0.5, 2.0, 3.5, 4.5] {
-        let (Some(at_edge), Some(beyond)) = (table_row(edge, ln_l), table_row(below, ln_l)) else {
+        let (Some(at_edge), Some(beyond)) = (node_row(edge, ln_l), node_row(below, ln_l)) else {
             println!("ln L {ln_l}: not solved");
             continue;
         };

@@ -1,6 +1,6 @@
 //! End-to-end firmware replay: build `bearing-hil-firmware`, run it under QEMU, compare with
-//! the host replay. Skips (with the reason printed) only when `qemu-system-arm` is absent;
-//! `.ci/run` installs it, so CI runs this.
+//! the host replay. Needs `qemu-system-arm` and the thumbv7em-none-eabihf Rust target
+//! (`cargo xtask test` installs both); without them the tests fail, naming what is missing.
 //!
 //! References: the host build of the same kernel source (a different compiler target, x86-64
 //! SSE vs the M4's single-precision FPU and soft f64) for the outputs; a block of exactly 1000
@@ -14,13 +14,10 @@ use bearing_hil::trace::{binary, TraceMeta, ValidationOptions};
 use std::path::Path;
 use std::time::Duration;
 
-fn qemu_available() -> bool {
-    match tools::check_qemu() {
-        Ok(()) => true,
-        Err(reason) => {
-            eprintln!("SKIPPED: {reason}");
-            false
-        }
+/// Fails the test, saying how to install them, when QEMU or the M4 target is missing.
+fn require_qemu_and_target() {
+    if let Err(reason) = tools::check_qemu().and_then(|()| tools::check_target()) {
+        panic!("{reason}");
     }
 }
 
@@ -59,9 +56,7 @@ fn options(trace: &Path, report: &Path) -> QemuOptions {
 
 #[test]
 fn firmware_replay_matches_the_host_bit_for_bit_and_counts_deterministically() {
-    if !qemu_available() {
-        return;
-    }
+    require_qemu_and_target();
     let dir = tempfile::tempdir().unwrap();
     let trace = dir.path().join("whirl.csv");
     write_trace(&trace, 120);
@@ -117,9 +112,7 @@ fn firmware_replay_matches_the_host_bit_for_bit_and_counts_deterministically() {
 /// documented code, never a hang.
 #[test]
 fn firmware_rejects_corrupted_traces_with_its_exit_code() {
-    if !qemu_available() {
-        return;
-    }
+    require_qemu_and_target();
     let elf = tools::build_firmware(&tools::firmware_dir()).unwrap();
     let dir = tempfile::tempdir().unwrap();
     let source = dir.path().join("whirl.bin");

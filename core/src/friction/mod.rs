@@ -22,6 +22,8 @@
 pub mod asperity;
 mod params;
 pub mod traction;
+// Generated, with the core's other generated files, into `core/src/generated/` (its README).
+#[path = "../generated/traction_table.rs"]
 pub mod traction_table;
 
 pub use params::{FrictionDesign, FrictionParams};

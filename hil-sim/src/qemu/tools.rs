@@ -20,7 +20,7 @@ pub fn check_qemu() -> Result<(), String> {
         _ => Err(
             "qemu-system-arm is not installed or does not run; install it with \
                   `sudo apt-get update && sudo apt-get install -y qemu-system-arm` \
-                  (Debian/Ubuntu; `bash .ci/run` does this)"
+                  (Debian/Ubuntu; `cargo xtask setup` does this)"
                 .to_string(),
         ),
     }
@@ -31,7 +31,7 @@ pub fn check_target() -> Result<(), String> {
     let missing = || {
         format!(
             "the Rust target {TARGET} is not installed; add it with `rustup target add {TARGET}` \
-             (`bash .ci/run` does this)"
+             (`cargo xtask setup` does this)"
         )
     };
     let out = Command::new("rustc")

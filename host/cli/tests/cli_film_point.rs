@@ -145,7 +145,7 @@ fn point_film_refusals_name_the_flag() {
 }
 
 /// `bearing export` tells a point-contact model from a line-contact one: the committed point
-/// model regenerates the committed `core/src/film/ann/point_model_weights.rs` byte for byte.
+/// model regenerates the committed `core/src/generated/point_model_weights.rs` byte for byte.
 #[test]
 fn export_writes_the_point_model() {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
@@ -161,11 +161,11 @@ fn export_writes_the_point_model() {
     ]);
     assert!(ok, "{err}");
     let committed =
-        std::fs::read_to_string(root.join("core/src/film/ann/point_model_weights.rs")).unwrap();
+        std::fs::read_to_string(root.join("core/src/generated/point_model_weights.rs")).unwrap();
     assert!(std::fs::read_to_string(&out).unwrap() == committed);
 }
 
-/// `bearing export --tanh-table` writes the committed `core/src/film/ann/tanh_table.rs` byte
+/// `bearing export --tanh-table` writes the committed `core/src/generated/tanh_table.rs` byte
 /// for byte, and is refused together with `--model`, naming both flags.
 #[test]
 fn export_writes_the_shared_tanh_table() {
@@ -174,7 +174,7 @@ fn export_writes_the_shared_tanh_table() {
     let out = dir.path().join("tanh_table.rs");
     let (ok, _, err) = bearing(&["export", "--tanh-table", "--out", out.to_str().unwrap()]);
     assert!(ok, "{err}");
-    let committed = std::fs::read_to_string(root.join("core/src/film/ann/tanh_table.rs")).unwrap();
+    let committed = std::fs::read_to_string(root.join("core/src/generated/tanh_table.rs")).unwrap();
     assert!(std::fs::read_to_string(&out).unwrap() == committed);
     let model = root.join("data/ann/numerical_model.json");
     let (ok, _, err) = bearing(&["export", "--tanh-table", "--model", model.to_str().unwrap()]);

@@ -5,8 +5,10 @@
 //! each followed by `friction` at the row's shaft speed: the friction torque, power loss and
 //! its split are outputs too).
 //!
-//! Needs `python3` with FMPy (`pip install fmpy`; `.ci/run` installs it): the test fails, naming
-//! it, when it is missing.
+//! Needs a Python interpreter with FMPy and numpy, named by the environment variable
+//! `BEARING_PYTHON`: `cargo xtask test` makes one under `target/python` (the packages of
+//! `host/xtask/python-requirements.txt`) and sets it. The test fails, naming what is missing,
+//! when the variable is unset or the interpreter lacks the packages.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -131,13 +133,21 @@ fn fmpy_validates_and_simulates_the_fmu_bit_for_bit() {
         args.push(dir.path().join(format!("{name}_in.csv")));
         args.push(dir.path().join(format!("{name}_out.csv")));
     }
-    let run = Command::new("python3").args(&args).output();
-    let run = run.expect("python3 must be installed (with FMPy: pip install fmpy)");
+    let python = std::env::var_os("BEARING_PYTHON").unwrap_or_else(|| {
+        panic!(
+            "BEARING_PYTHON is not set: it names the Python interpreter with FMPy and numpy \
+             (`cargo xtask test` makes one in target/python and sets it; or \
+             `BEARING_PYTHON=$PWD/target/python/bin/python cargo test …` after `cargo xtask setup`)"
+        )
+    });
+    let run = Command::new(&python).args(&args).output();
+    let run = run.unwrap_or_else(|e| panic!("cannot run BEARING_PYTHON = {python:?}: {e}"));
     let stdout = String::from_utf8_lossy(&run.stdout);
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert!(
         run.status.success(),
-        "fmpy_run.py failed (FMPy missing? pip install fmpy)\n{stdout}\n{stderr}"
+        "fmpy_run.py under {python:?} failed (FMPy or numpy missing? they are listed in \
+         host/xtask/python-requirements.txt)\n{stdout}\n{stderr}"
     );
     println!("{stdout}");
     assert!(stdout.contains("fmpy.validate_fmu: no problems"));

@@ -1,7 +1,8 @@
 //! `bearing-ffi-header [--write]`: generates the C header of `bearing-ffi` (core/ffi) with
 //! cbindgen from the crate's source and `core/ffi/cbindgen.toml`, and compares it with the
 //! committed `core/ffi/include/bearing.h`: exit 0 when they are equal, 1 when the committed
-//! file is stale (or, with `--write`, rewrites it), 2 when generation fails.
+//! file is stale (or, with `--write`, rewrites it), 2 when generation fails. Run by `cargo
+//! xtask generate [--check]` with the workspace's other generated files.
 
 use std::path::Path;
 use std::process::ExitCode;
@@ -53,9 +54,8 @@ fn main() -> ExitCode {
         Ok(committed) if committed == generated => ExitCode::SUCCESS,
         _ => {
             eprintln!(
-                "core/ffi/include/bearing.h is stale: regenerate it with `cargo run --manifest-path \
-                 core/ffi/header/Cargo.toml -- --write` (or BEARING_FFI_WRITE_HEADER=1 cargo test \
-                 -p bearing-ffi --test header) and commit it"
+                "core/ffi/include/bearing.h is stale: regenerate it with `cargo xtask generate \
+                 c-header` and commit it"
             );
             ExitCode::from(1)
         }

@@ -20,9 +20,9 @@ pub struct ExportArgs {
     /// Write the core's shared tanh table instead of a network.
     #[arg(long, conflicts_with = "model")]
     tanh_table: bool,
-    /// Generated Rust file [default: core/src/film/ann/model_weights.rs for a line-contact
-    /// model, core/src/film/ann/point_model_weights.rs for a point-contact one,
-    /// core/src/film/ann/tanh_table.rs with --tanh-table].
+    /// Generated Rust file [default: core/src/generated/model_weights.rs for a line-contact
+    /// model, core/src/generated/point_model_weights.rs for a point-contact one,
+    /// core/src/generated/tanh_table.rs with --tanh-table].
     #[arg(long)]
     out: Option<PathBuf>,
 }
@@ -48,7 +48,7 @@ pub fn run(args: ExportArgs) -> Result<()> {
         if !q.lut.is_empty() && !shares_core_tanh_table(q) {
             eprintln!(
                 "note: {}: its {} table (input scale {:e}) is not the core's tanh table (input \
-                 scale {TANH_LUT_INPUT_SCALE:e}, core/src/film/ann/tanh_table.rs): {} holds its \
+                 scale {TANH_LUT_INPUT_SCALE:e}, core/src/generated/tanh_table.rs): {} holds its \
                  own copy",
                 model_path.display(),
                 q.activation.name(),
