@@ -75,7 +75,7 @@ fn core_f32_agrees_with_host_f64() {
 }
 
 /// The core's integer network against the host mirror (same integer kernels, f64 vs f32
-/// features), and against the core f32 network within the bounds: at most 0.2 %
+/// features), and against the core f32 network within the accuracy bounds: at most 0.2 %
 /// median and 1 % maximum added relative error.
 #[test]
 fn core_int_within_bounds_of_f32() {
@@ -96,7 +96,7 @@ fn core_int_within_bounds_of_f32() {
     }
 }
 
-/// The accuracy targets on the held-out numerical test set (750 cases), core models:
+/// The accuracy targets on the held-out numerical test set (750 cases), core models:
 /// central film R² ≥ 0.9995, median ≤ 0.5 %, p99 ≤ 2 %, max ≤ 5 %; minimum film with twice
 /// the error bounds; every test case served by the network, not the fallback.
 #[test]
@@ -132,7 +132,7 @@ fn numerical_model_meets_accuracy_targets() {
 }
 
 /// The pipeline model (Moes stand-in), host f64 network and integer mirror, against its
-/// closed-form reference on its held-out test set: all of the targets (central film
+/// closed-form reference on its held-out test set: all of the accuracy targets (central film
 /// R² ≥ 0.9995, median ≤ 0.5 %, p99 ≤ 2 %, max ≤ 5 %; minimum film twice the error bounds).
 #[test]
 fn pipeline_model_meets_accuracy_targets() {

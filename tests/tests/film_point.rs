@@ -176,7 +176,7 @@ fn hamrock_dowson_matches_the_host_formulas() {
     );
 }
 
-/// The accuracy targets, core f32 and int16 networks against the solver's Richardson
+/// The accuracy targets, core f32 and int16 networks against the solver's Richardson
 /// films on the held-out test rows: R² ≥ 0.9995, median ≤ 0.5 %, p99 ≤ 2 % for h_c and h_min;
 /// every test row served by the network.
 #[test]

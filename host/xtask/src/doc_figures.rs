@@ -17,7 +17,7 @@
 //! by dots (`-1` is the last element), an optional factor (`*1e6`) — and formats it:
 //! `%.Nf` (N decimals), `%d` (an integer), `%'d` (an integer in groups of three digits
 //! separated by spaces, as the docs write 27 330), `%.N·e` (N decimals times a power of ten,
-//! `1.95·10⁹`). The text must appear in the block that follows the comment (up to the first
+//! `1.95·10⁹`), `%.N·eK` (times the power K, `0.99·10⁹` for `%.2·e9`). The text must appear in the block that follows the comment (up to the first
 //! blank line after some text), not inside a longer number. `<!-- figures (slow): … -->` marks
 //! a command that takes minutes: it runs only with `--all`. The cheap blocks run with every
 //! `cargo xtask test`.
@@ -184,8 +184,16 @@ fn format_value(v: f64, format: &str) -> Result<String> {
     if let Some(d) = format.strip_prefix("%.").and_then(|s| s.strip_suffix('f')) {
         return Ok(format!("{v:.*}", decimals(d)?));
     }
-    if let Some(d) = format.strip_prefix("%.").and_then(|s| s.strip_suffix("·e")) {
+    if let Some((d, fixed)) = format.strip_prefix("%.").and_then(|s| s.split_once("·e")) {
         let d = decimals(d)?;
+        if !fixed.is_empty() {
+            // A fixed power of ten (`%.2·e9`: 0.99·10⁹ as a table column writes it).
+            let exponent: i32 = fixed
+                .parse()
+                .map_err(|_| anyhow!("`{format}`: the power of ten is a number"))?;
+            let mantissa = format!("{:.*}", d, v / 10f64.powi(exponent));
+            return Ok(format!("{mantissa}·10{}", superscript(exponent)));
+        }
         let mut exponent = if v == 0.0 {
             0
         } else {
@@ -199,7 +207,7 @@ fn format_value(v: f64, format: &str) -> Result<String> {
         }
         return Ok(format!("{mantissa}·10{}", superscript(exponent)));
     }
-    bail!("unknown format `{format}`: %.Nf, %d, %'d or %.N·e")
+    bail!("unknown format `{format}`: %.Nf, %d, %'d, %.N·e or %.N·eK")
 }
 
 /// The value at a dotted path of keys and indices.
@@ -313,6 +321,8 @@ pub fn run(root: &Path, args: &Args) -> Result<Checked> {
     std::fs::create_dir_all(&scratch)?;
     let mut checked = Checked::default();
     let mut slow_left = 0;
+    // Blocks that show figures of the same command share one run of it.
+    let mut outputs: std::collections::HashMap<String, Value> = std::collections::HashMap::new();
     for file in markdown_files(root, args)? {
         let markdown = std::fs::read_to_string(root.join(&file))
             .with_context(|| format!("reading {}", file.display()))?;
@@ -323,8 +333,15 @@ pub fn run(root: &Path, args: &Args) -> Result<Checked> {
                 continue;
             }
             let started = Instant::now();
-            let json = match run_command(root, &block.command, &scratch) {
-                Ok(json) => json,
+            let json = match outputs.get(&block.command) {
+                Some(json) => Ok(json.clone()),
+                None => run_command(root, &block.command, &scratch),
+            };
+            let json = match json {
+                Ok(json) => {
+                    outputs.insert(block.command.clone(), json.clone());
+                    json
+                }
                 Err(e) => {
                     println!("test {name} ... FAILED\n    `{}`: {e:#}", block.command);
                     checked.failed.push(name);
@@ -391,6 +408,7 @@ mod tests {
         assert_eq!(format_value(1.951e9, "%.2·e").unwrap(), "1.95·10⁹");
         assert_eq!(format_value(9.996e8, "%.2·e").unwrap(), "1.00·10⁹");
         assert_eq!(format_value(4.7e-10, "%.1·e").unwrap(), "4.7·10⁻¹⁰");
+        assert_eq!(format_value(9.856e8, "%.2·e9").unwrap(), "0.99·10⁹");
     }
 
     #[test]
