@@ -66,53 +66,65 @@ struct Block {
     text: String,
 }
 
-/// The figure blocks of a markdown text.
+/// The figure blocks of a markdown text. Comments stacked one after the other (for figures of
+/// several commands in one paragraph or table) share the block that follows the last.
 fn blocks(markdown: &str) -> Result<Vec<Block>> {
     let lines: Vec<&str> = markdown.lines().collect();
     let mut out = Vec::new();
+    let mut pending: Vec<Block> = Vec::new();
     let mut i = 0;
     while i < lines.len() {
         let line = lines[i].trim_start();
-        let (slow, rest) = if let Some(r) = line.strip_prefix("<!-- figures:") {
-            (false, r)
-        } else if let Some(r) = line.strip_prefix("<!-- figures (slow):") {
-            (true, r)
+        let comment = if let Some(r) = line.strip_prefix("<!-- figures:") {
+            Some((false, r))
         } else {
+            line.strip_prefix("<!-- figures (slow):").map(|r| (true, r))
+        };
+        if let Some((slow, rest)) = comment {
+            let start = i + 1;
+            let mut figures = Vec::new();
+            i += 1;
+            loop {
+                let Some(l) = lines.get(i) else {
+                    bail!("line {start}: the figure block has no closing `-->`");
+                };
+                let l = l.trim();
+                i += 1;
+                if l == "-->" {
+                    break;
+                }
+                figures.push(parse_figure(l).with_context(|| format!("line {i}"))?);
+            }
+            pending.push(Block {
+                line: start,
+                slow,
+                command: rest.trim().to_string(),
+                figures,
+                text: String::new(),
+            });
+            continue;
+        }
+        if pending.is_empty() || line.is_empty() {
             i += 1;
             continue;
-        };
-        let start = i + 1;
-        let command = rest.trim().to_string();
-        let mut figures = Vec::new();
-        i += 1;
-        loop {
-            let Some(l) = lines.get(i) else {
-                bail!("line {start}: the figure block has no closing `-->`");
-            };
-            let l = l.trim();
-            i += 1;
-            if l == "-->" {
-                break;
-            }
-            figures.push(parse_figure(l).with_context(|| format!("line {i}"))?);
         }
-        // The block that follows: up to the first blank line after some text.
+        // The block that follows: up to the first blank line.
         let mut text = String::new();
         while let Some(l) = lines.get(i) {
-            if l.trim().is_empty() && !text.trim().is_empty() {
+            if l.trim().is_empty() {
                 break;
             }
             text.push_str(l);
             text.push('\n');
             i += 1;
         }
-        out.push(Block {
-            line: start,
-            slow,
-            command,
-            figures,
-            text,
-        });
+        for mut block in pending.drain(..) {
+            block.text = text.clone();
+            out.push(block);
+        }
+    }
+    if let Some(b) = pending.first() {
+        bail!("line {}: the figure block is followed by no text", b.line);
     }
     Ok(out)
 }
@@ -413,9 +425,10 @@ mod tests {
 
     #[test]
     fn reads_blocks_and_finds_figures_only_as_whole_numbers() {
-        let md = "# T\n\n<!-- figures: bearing x --json\na.0 %.1f\nb *1e6 %.2f\n-->\n| x | 99.2 |\n| y | 1.50 |\n\nlater 7\n";
+        let md = "# T\n\n<!-- figures: bearing x --json\na.0 %.1f\nb *1e6 %.2f\n-->\n<!-- figures (slow): hil-sim y\nc %d\n-->\n| x | 99.2 |\n| y | 1.50 |\n\nlater 7\n";
         let b = blocks(md).unwrap();
-        assert_eq!(b.len(), 1);
+        assert_eq!(b.len(), 2);
+        assert!(b[1].slow && b[1].text == b[0].text);
         assert_eq!(b[0].command, "bearing x --json");
         assert_eq!(b[0].figures[1].factor, 1e6);
         assert!(b[0].text.contains("1.50") && !b[0].text.contains("later"));
