@@ -4,8 +4,9 @@
 //!
 //! Both sides use the Barus viscosity and the numerical central film, so the comparison tests
 //! the core's traction model, not its film model: the mean stress ratio T(M, L, N) tabulated
-//! from solutions at one α on a grid of Moes' M and L (`generate_traction_table` below), read
-//! back by tricubic interpolation, against the traction of each contact's own solution. The
+//! from solutions at one α on a grid of Moes' M and L (`bearing_train::traction_table`, which
+//! `cargo xtask generate --check` re-solves and compares byte for byte), read back by tricubic
+//! interpolation, against the traction of each contact's own solution. The
 //! core's viscous friction as the step computes it is the lesser of that and the thermal
 //! (Evans–Johnson) traction, compared too, at slide-to-roll ratios 0.3–10 % and Eyring
 //! stresses 2–20 MPa.
