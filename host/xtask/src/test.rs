@@ -76,10 +76,12 @@ fn cargo_test(
         Some(p) => command.env(PYTHON_VAR, p),
         None => command.env_remove(PYTHON_VAR),
     };
-    eprintln!(
-        "\n==> cargo test --workspace --release --no-fail-fast {}",
+    let what = if cargo_args.is_empty() {
+        "--workspace".to_string()
+    } else {
         cargo_args.join(" ")
-    );
+    };
+    eprintln!("\n==> cargo test --release --no-fail-fast {what}");
     let mut child = command.spawn()?;
     let mut totals = Totals::default();
     let mut failed_tests = Vec::new();
@@ -109,7 +111,11 @@ pub fn run(root: &Path, args: &TestArgs) -> Result<()> {
     let mut doc_figures_ok = true;
     if !args.no_doc_figures {
         eprintln!("\n==> the docs' figures (cargo xtask doc-figures)");
-        match doc_figures::run(root, &doc_figures::Args::default()) {
+        let args = doc_figures::Args {
+            no_build: true,
+            ..doc_figures::Args::default()
+        };
+        match doc_figures::run(root, &args) {
             Ok(result) => {
                 totals.passed += result.passed;
                 totals.failed += result.failed.len();
