@@ -16,6 +16,7 @@
 //! committed. [`DynBearing`] is the same bearing behind an object-safe trait, for callers that
 //! choose the roller count at run time.
 
+pub mod ball;
 mod coupling;
 mod dynamic;
 mod equilibrium;

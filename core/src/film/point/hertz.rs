@@ -48,11 +48,14 @@ pub struct EllipseShape {
     pub ln_ellipticity: f32,
     /// Complete elliptic integral of the second kind, E(1 − 1/k²).
     pub second_integral: f32,
+    /// Complete elliptic integral of the first kind, K(1 − 1/k²), which sets the Hertz
+    /// approach (Hamrock 1994, ch. 3: δ = K [(9/(2E R))(w/(πkE'))²]^⅓).
+    pub first_integral: f32,
 }
 
-/// `(ln(R_y/R_x) of k, E)` of the contact with ellipticity `k` ≥ 1 (module doc).
+/// `(ln(R_y/R_x) of k, K, E)` of the contact with ellipticity `k` ≥ 1 (module doc).
 #[inline(always)]
-fn ratio_and_second_integral(k: f32) -> (f32, f32) {
+fn ratio_and_integrals(k: f32) -> (f32, f32, f32) {
     let inv_k = 1.0 / k;
     let m = 1.0 - inv_k * inv_k;
     let mut a = 0.5 * (1.0 + inv_k);
@@ -72,7 +75,7 @@ fn ratio_and_second_integral(k: f32) -> (f32, f32) {
     }
     let big_k = core::f32::consts::FRAC_PI_2 / a;
     let ln_ratio = 2.0 * ln_atanh(k) + ln_atanh(1.0 - s_over_m) - ln_atanh(s_over_m);
-    (ln_ratio, big_k * (1.0 - m * s_over_m))
+    (ln_ratio, big_k, big_k * (1.0 - m * s_over_m))
 }
 
 /// Ellipticity and E of the contact with `ln(R_y/R_x)` = `ln_radius_ratio`, clamped to
@@ -88,9 +91,11 @@ pub fn ellipse_shape(ln_radius_ratio: f32) -> EllipseShape {
     let [s0, s1, s2] = ELLIPTICITY_GAIN;
     let gain = s0 + ln_r * (s1 + ln_r * s2);
     let mut second_integral = core::f32::consts::FRAC_PI_2;
+    let mut first_integral = core::f32::consts::FRAC_PI_2;
     for _ in 0..ELLIPTICITY_STEPS {
-        let (ln_ratio_k, e) = ratio_and_second_integral(exp_taylor(ln_k));
+        let (ln_ratio_k, big_k, e) = ratio_and_integrals(exp_taylor(ln_k));
         second_integral = e;
+        first_integral = big_k;
         // k ≥ 1: near R_y/R_x = 1 the first step from Hamrock–Brewe's k ≥ 1.0339 overshoots
         // below 1; the next steps continue from k = 1.
         ln_k = crate::math::max(ln_k + gain * (ln_r - ln_ratio_k), 0.0);
@@ -99,6 +104,7 @@ pub fn ellipse_shape(ln_radius_ratio: f32) -> EllipseShape {
         ellipticity: exp_taylor(ln_k),
         ln_ellipticity: ln_k,
         second_integral,
+        first_integral,
     }
 }
 
@@ -117,13 +123,15 @@ mod tests {
         );
     }
 
-    /// E(0.5) = 1.350643881 (Abramowitz & Stegun table 17.1): k = √2 gives m = ½; and the
+    /// E(0.5) = 1.350643881 and K(0.5) = 1.854074677 (Abramowitz & Stegun table 17.1): k = √2 gives m = ½; and the
     /// ratio it returns solves back to k = √2.
     #[test]
     fn second_integral_matches_the_table() {
         let k = core::f32::consts::SQRT_2;
-        let (ln_ratio, e) = ratio_and_second_integral(k);
+        let (ln_ratio, big_k, e) = ratio_and_integrals(k);
         assert!((e - 1.350_643_9).abs() < 3e-6, "{e}");
+        // K(0.5) = 1.854074677 (A&S table 17.1).
+        assert!((big_k - 1.854_074_7).abs() < 3e-6, "{big_k}");
         let s = ellipse_shape(ln_ratio);
         assert!((s.ellipticity / k - 1.0).abs() < 3e-6, "{s:?}");
     }
