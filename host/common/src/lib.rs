@@ -4,6 +4,7 @@
 //! output files written whole or not at all and the quiet end on a closed pipe.
 
 pub mod args;
+pub mod ball_config;
 pub mod closed_pipe;
 pub mod config;
 pub mod cpu;

@@ -372,9 +372,11 @@ impl<const Z: usize> BallBearing<Z> {
         // dQ/dδ_g = Q / (δ/1.5 − p H): the film thins as Q grows (docs/physics.md §4).
         let denominator = elastic / 1.5 - FILM_LOAD_EXPONENT * film_sum;
         let stiffness = select(load > 0.0, load / max(denominator, 1.0e-12), 0.0);
+        // An unloaded ball reports no film: its contacts are open.
+        let shown_scale = select(load > 0.0, film_scale, 0.0);
         for film in films.iter_mut() {
-            film.central_m *= film_scale;
-            film.minimum_m *= film_scale;
+            film.central_m *= shown_scale;
+            film.minimum_m *= shown_scale;
         }
         let (axes_in, pressure_in) = inner.ellipse(load);
         let (axes_out, pressure_out) = outer.ellipse(load);

@@ -120,7 +120,18 @@ impl<const Z: usize> BallBearing<Z> {
             .zip(scale)
             .fold(0.0_f32, |m, (a, s)| max(m, (a * s).abs()));
         let tolerance = RELATIVE_TOLERANCE * size + 1.0e-3;
+        // A film-coupled bearing starts from its dry equilibrium (continuation: the film
+        // moves the solution by a fraction of a micrometre, well inside Newton's reach).
         let mut u = load.held;
+        if self.film != super::BallFilm::Dry {
+            let dry = BallBearing::<Z> {
+                film: super::BallFilm::Dry,
+                ..*self
+            };
+            if let Ok(s) = dry.solve_static(load) {
+                u = s.displacement;
+            }
+        }
         let residual_of = |out: &BallBearingOutput<Z>| -> [f32; 5] {
             let model = out.applied_load();
             let mut r = [0.0; 5];
@@ -136,6 +147,9 @@ impl<const Z: usize> BallBearing<Z> {
             r
         };
         let norm = |r: &[f32; 5]| r.iter().fold(0.0_f32, |m, v| max(m, v.abs()));
+        // The line search's merit: the sum of squares, for which a Newton step is a descent
+        // direction (the largest component need not fall along it).
+        let merit = |r: &[f32; 5]| r.iter().map(|v| v * v).sum::<f32>();
         let state = |u: [f32; 5]| BallBearingState {
             cage_angle_rad: load.cage_angle_rad,
             ..BallBearingState::at(u, load.shaft_speed_rad_s)
@@ -152,8 +166,7 @@ impl<const Z: usize> BallBearing<Z> {
             }
             let step = newton_step(&out.stiffness, &residual, &load.free, lever);
             let mut fraction = 1.0;
-            let mut accepted = false;
-            for _ in 0..9 {
+            for attempt in 0..9 {
                 let mut trial = u;
                 for (t, d) in trial.iter_mut().zip(step) {
                     *t += fraction * d;
@@ -165,16 +178,14 @@ impl<const Z: usize> BallBearing<Z> {
                     continue;
                 };
                 let trial_residual = residual_of(&trial_out);
-                // Not worse: with every ball lifted off the residual stays flat while the
-                // rings close their clearance.
-                if norm(&trial_residual) <= norm(&residual) {
-                    (u, out, residual, accepted) = (trial, trial_out, trial_residual, true);
+                // Not worse (with every ball lifted off the residual stays flat while the rings
+                // close their clearance), or the last, smallest trial: the iteration cap ends
+                // a search that cannot progress.
+                if merit(&trial_residual) <= merit(&residual) || attempt == 8 {
+                    (u, out, residual) = (trial, trial_out, trial_residual);
                     break;
                 }
                 fraction *= 0.5;
-            }
-            if !accepted {
-                break;
             }
         }
         Err(StaticSolveError::NotConverged {

@@ -113,7 +113,7 @@ fn core_input(case: &PointContactCase) -> Result<PointContactInput> {
 }
 
 /// Stable name of a film source in the JSON.
-fn source_name(s: FilmSource) -> &'static str {
+pub(super) fn source_name(s: FilmSource) -> &'static str {
     match s {
         FilmSource::None => "none",
         FilmSource::Regression => "regression",

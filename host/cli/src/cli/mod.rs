@@ -15,4 +15,5 @@ pub mod friction;
 pub mod friction_contact;
 pub mod shaft;
 pub mod statics;
+pub mod statics_ball;
 pub mod train;

@@ -13,7 +13,8 @@ use super::film::{max_load_n, max_speed_rpm, MAX_HERTZ_PRESSURE_PA};
 use bearing_host_common::config::BearingConfig;
 use bearing_host_common::rolling::{boxed, StepSnapshot};
 
-/// Static equilibrium of the inner race under a radial load along −y.
+/// Static equilibrium of the inner race under a radial load along −y (a roller bearing), or
+/// under radial, axial and moment loads (a ball bearing: a config with a `[ball]` table).
 #[derive(Args, Debug)]
 pub struct StaticArgs {
     /// Bearing configuration (TOML).
@@ -22,6 +23,8 @@ pub struct StaticArgs {
     /// Radial load on the inner race (N), acting along −y; default: the config's `[case]`.
     #[arg(long, value_parser = non_negative)]
     pub radial_load: Option<f64>,
+    #[command(flatten)]
+    pub ball: super::statics_ball::BallStaticArgs,
     /// Shaft speed (rpm); default: the config's `[case]`. Zero gives the dry bearing.
     #[arg(long, value_parser = non_negative)]
     pub speed_rpm: Option<f64>,
@@ -229,6 +232,12 @@ pub(super) fn value_source(given: bool, flag: &str, config: &Path, field: &str) 
 
 /// Run `bearing static`.
 pub fn run(args: StaticArgs) -> anyhow::Result<()> {
+    let text = std::fs::read_to_string(&args.config)
+        .with_context(|| format!("{}: cannot read", args.config.display()))?;
+    if bearing_host_common::ball_config::is_ball_config(&text) {
+        return super::statics_ball::run(&args);
+    }
+    args.ball.refuse_for_rollers()?;
     let (config, params) = BearingConfig::load(&args.config)?;
     let load = radial_load_n(args.radial_load, &config)?;
     let rpm = args
