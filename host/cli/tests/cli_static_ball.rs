@@ -169,3 +169,34 @@ fn ball_refusals_name_the_flag() {
         assert!(!ok && err.contains(needle), "{args:?}: {err}");
     }
 }
+
+/// `bearing film` on a ball config: both contacts, with the 6205 inner contact's Hertz
+/// ellipticity (9.32: R_y/R_x = 32.6) and its film source flagged.
+#[test]
+fn film_of_both_ball_contacts() {
+    let cfg = config("deep_groove_6205.toml");
+    let v = json(&[
+        "film",
+        "--config",
+        &cfg,
+        "--speed-rpm",
+        "10000",
+        "--ball-load",
+        "500",
+        "--no-solver",
+        "--json",
+    ]);
+    let k = v["inner"]["dimensionless"]["ellipticity"].as_f64().unwrap();
+    assert!((k - 9.32).abs() < 0.01, "{k}");
+    assert!(v["outer"]["dimensionless"]["ellipticity"].as_f64().unwrap() < k);
+    let (ok, _, err) = bearing(&[
+        "film",
+        "--config",
+        &cfg,
+        "--speed-rpm",
+        "10000",
+        "--roller-load",
+        "5",
+    ]);
+    assert!(!ok && err.contains("--ball-load"), "{err}");
+}

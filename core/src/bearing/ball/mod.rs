@@ -473,6 +473,21 @@ impl Totals<'_> {
     }
 }
 
+impl BallBearingParams {
+    /// The inner and the outer contact of a ball carrying `load_n` at the nominal (deep
+    /// groove: free) contact angle, the shaft at `shaft_speed_rad_s`: the point-film inputs
+    /// `bearing film --config` reports on.
+    pub fn contact_inputs(&self, load_n: f32, shaft_speed_rad_s: f32) -> [PointContactInput; 2] {
+        let p = self;
+        let (_, cos_alpha) = sin_cos(p.nominal_contact_angle_rad);
+        let gamma = p.ball_diameter_m * cos_alpha / p.pitch_diameter_m;
+        let entrainment =
+            0.25 * p.pitch_diameter_m * shaft_speed_rad_s.abs() * (1.0 - gamma * gamma);
+        [true, false]
+            .map(|inner| RaceContact::new(p, cos_alpha, inner).film_input(p, load_n, entrainment))
+    }
+}
+
 impl BallOutput {
     /// A ball without load or film.
     pub const UNLOADED: BallOutput = BallOutput {

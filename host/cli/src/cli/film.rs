@@ -63,14 +63,18 @@ pub struct FilmArgs {
     #[arg(long, value_parser = positive, conflicts_with = "config")]
     pub eta0: Option<f64>,
     /// Bearing configuration (TOML).
-    #[arg(long, requires_all = ["speed_rpm", "roller_load"])]
+    #[arg(long, requires = "speed_rpm")]
     pub config: Option<PathBuf>,
     /// Shaft speed (rpm), with --config.
     #[arg(long, value_parser = positive, requires = "config")]
     pub speed_rpm: Option<f64>,
-    /// Roller load (N), with --config.
+    /// Roller load (N), with --config of a roller bearing.
     #[arg(long, value_parser = positive, requires = "config")]
     pub roller_load: Option<f64>,
+    /// Ball load (N), with --config of a ball bearing: both contacts of a ball at the
+    /// nominal contact angle.
+    #[arg(long, value_parser = positive, requires = "config")]
+    pub ball_load: Option<f64>,
     /// Machine-readable output.
     #[arg(long)]
     pub json: bool,
@@ -87,6 +91,14 @@ pub struct FilmArgs {
     /// The plot spans value/F … value·F.
     #[arg(long, default_value_t = 10.0, value_parser = positive)]
     pub plot_span: f64,
+}
+
+/// Refuse the point-contact flags on a line contact.
+fn refuse_point_flags(args: &FilmArgs) -> anyhow::Result<()> {
+    if args.radius_y.is_some() || args.ellipticity.is_some() || args.no_solver {
+        bail!("--radius-y, --ellipticity and --no-solver are point-contact flags: use `bearing film --contact point` or a ball-bearing --config");
+    }
+    Ok(())
 }
 
 /// The kind of contact `bearing film` reports.
@@ -428,10 +440,16 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
     if args.contact == FilmContact::Point {
         return super::film_point::run(&args);
     }
-    if args.radius_y.is_some() || args.ellipticity.is_some() || args.no_solver {
-        bail!("--radius-y, --ellipticity and --no-solver are point-contact flags: use `bearing film --contact point`");
-    }
     if let Some(path) = &args.config {
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("{}: cannot read", path.display()))?;
+        if bearing_host_common::ball_config::is_ball_config(&text) {
+            return super::film_point::run_ball(&args, path);
+        }
+        if args.ball_load.is_some() {
+            bail!("--ball-load applies to ball-bearing configs: give --roller-load N");
+        }
+        refuse_point_flags(&args)?;
         let (config, params) = BearingConfig::load(path)?;
         let speed_rpm = args
             .speed_rpm
@@ -475,6 +493,7 @@ pub fn run(args: FilmArgs) -> anyhow::Result<()> {
         print_human(&format!("{}: outer contact", config.name), &outer);
         return Ok(());
     }
+    refuse_point_flags(&args)?;
     let missing: Vec<&str> = [
         ("--load", args.load),
         ("--length", args.length),

@@ -254,3 +254,53 @@ pub fn run(args: &FilmArgs) -> Result<()> {
         Ok(())
     }
 }
+
+/// `bearing film --config <ball config> --speed-rpm R --ball-load N`: both contacts of a ball
+/// at the nominal contact angle, every film model side by side.
+pub fn run_ball(args: &FilmArgs, path: &std::path::Path) -> Result<()> {
+    let (config, params) = bearing_host_common::ball_config::BallBearingConfig::load(path)?;
+    let Some(load) = args.ball_load else {
+        bail!("--ball-load N is required with a ball-bearing --config");
+    };
+    if args.roller_load.is_some() {
+        bail!("--roller-load applies to roller-bearing configs: give --ball-load N");
+    }
+    let rpm = args.speed_rpm.unwrap_or(0.0);
+    if rpm > super::film::max_speed_rpm() {
+        bail!(
+            "--speed-rpm = {rpm:e} is out of range: allowed (0, {:.0}] rpm",
+            super::film::max_speed_rpm()
+        );
+    }
+    let contacts = params.contact_inputs(load as f32, super::common::rad_per_s(rpm));
+    let mut reports = Vec::new();
+    for contact in contacts {
+        let case = PointContactCase {
+            load_n: f64::from(contact.load_n),
+            entrainment_speed_m_s: f64::from(contact.entrainment_speed_m_s),
+            radius_x_m: f64::from(contact.radius_x_m),
+            radius_y_m: f64::from(contact.radius_y_m),
+            reduced_modulus_pa: f64::from(contact.reduced_modulus_pa),
+            pressure_viscosity_pa_inv: f64::from(contact.pressure_viscosity_pa_inv),
+            viscosity_pa_s: f64::from(contact.viscosity_pa_s),
+        };
+        reports.push(report(&case, &contact, !args.no_solver));
+    }
+    let [inner, outer] = <[serde_json::Value; 2]>::try_from(reports)
+        .map_err(|_| anyhow!("two contacts expected"))?;
+    if args.json {
+        return print_json(&json!({
+            "bearing": config.name,
+            "speed_rpm": rpm,
+            "ball_load_n": load,
+            "inner": inner,
+            "outer": outer,
+        }));
+    }
+    println!("{}: ball load {load} N at {rpm} rpm", config.name);
+    println!("inner contact:");
+    print_human(&inner);
+    println!("outer contact:");
+    print_human(&outer);
+    Ok(())
+}
