@@ -7,28 +7,21 @@
 //! Reference text: Friswell, Penny, Garvey & Lees, *Dynamics of Rotating Machines*, Cambridge
 //! University Press (2010), ch. 5 (finite-element rotor models).
 
+//! Layout: [`bearing`] (the bearing interface, the linear bearing and the adapter to the core's
+//! roller bearing), [`model`] (shaft elements, disks, damping, motor, loads, speed profile, the
+//! model file and the assembled rotor), [`analysis`] (statics, modes, reduction, time response,
+//! sweeps, spectrum), and the outputs ([`output`] CSV, [`plots`] PNG).
+
+pub mod analysis;
 pub mod bearing;
-pub mod config;
-pub mod core_bearing;
-pub mod damping;
-pub mod disk;
-pub mod element;
-pub mod integrator;
-pub mod loads;
 pub mod model;
-pub mod modes;
-pub mod motor;
-pub mod operating;
 pub mod output;
 pub mod plots;
-pub mod reduction;
-pub mod roller_bearing;
-pub mod simulate;
-pub mod spectrum;
-pub mod speed_profile;
-pub mod statics;
-pub mod sweep;
-pub mod system;
+
+// The paths other crates (CLI, benches, workspace tests, fuzz) use, kept at the crate root.
+pub use analysis::{integrator, operating, reduction, simulate, spectrum, statics, sweep, system};
+pub use bearing::roller_bearing;
+pub use model::{config, element, loads};
 
 #[cfg(test)]
 mod tests;

@@ -6,7 +6,7 @@
 use std::io::Write;
 use std::path::Path;
 
-use super::simulate::RunResult;
+use crate::analysis::simulate::RunResult;
 
 /// Writes the full record. Columns: `t_s`, then per probe node `n{k}_x_m, n{k}_y_m, n{k}_vx_m_s,
 /// n{k}_vy_m_s, n{k}_ax_m_s2, n{k}_ay_m_s2`, then per bearing `b{i}_fx_n, b{i}_fy_n,

@@ -7,8 +7,8 @@ use plotters::prelude::*;
 
 use bearing_host_common::plot_style::draw_legend;
 
-use super::operating::CampbellPoint;
-use super::sweep::SweepPoint;
+use crate::analysis::operating::CampbellPoint;
+use crate::analysis::sweep::SweepPoint;
 
 type PlotResult = Result<(), Box<dyn std::error::Error>>;
 
@@ -58,7 +58,7 @@ pub fn campbell(points: &[CampbellPoint], orders: &[f64], path: &Path) -> PlotRe
         .max()
         .unwrap_or(0);
     for m in 0..n_modes {
-        let pts: Vec<(f64, f64, super::modes::Whirl)> = points
+        let pts: Vec<(f64, f64, crate::analysis::modes::Whirl)> = points
             .iter()
             .filter_map(|p| {
                 p.frequencies_rad_s
@@ -68,9 +68,9 @@ pub fn campbell(points: &[CampbellPoint], orders: &[f64], path: &Path) -> PlotRe
             .collect();
         chart.draw_series(pts.iter().map(|&(x, y, wh)| {
             let color = match wh {
-                super::modes::Whirl::Forward => RED,
-                super::modes::Whirl::Backward => BLUE,
-                super::modes::Whirl::Planar => BLACK,
+                crate::analysis::modes::Whirl::Forward => RED,
+                crate::analysis::modes::Whirl::Backward => BLUE,
+                crate::analysis::modes::Whirl::Planar => BLACK,
             };
             Circle::new((x, y), 3, color.filled())
         }))?;
@@ -180,7 +180,7 @@ pub fn spectrum(
 /// Sweep envelopes against speed, lubricated (solid) and dry (dashed-colour), one panel each
 /// for bearing stiffness, displacement and acceleration (and contact force / film when known).
 pub fn envelopes(points: &[SweepPoint], path: &Path) -> PlotResult {
-    type Get = fn(&super::simulate::Envelope) -> Option<f64>;
+    type Get = fn(&crate::analysis::simulate::Envelope) -> Option<f64>;
     let panels: [(&str, Get); 6] = [
         ("max bearing stiffness (N/m)", |e| {
             Some(e.max_bearing_stiffness_n_per_m)
@@ -247,7 +247,7 @@ pub fn power_loss(points: &[SweepPoint], path: &Path) -> PlotResult {
     root.fill(&WHITE)?;
     let areas = root.split_evenly((1, 2));
     let (r0, r1) = range_of(points.iter().map(|p| p.speed_rpm));
-    type Get = fn(&super::bearing::BearingFriction) -> f64;
+    type Get = fn(&crate::bearing::BearingFriction) -> f64;
     type Series<'a> = (&'a str, RGBColor, Get);
     let total: [Series; 1] = [("total", BLACK, |f| f.power_loss_w)];
     let parts: [Series; 3] = [
@@ -306,7 +306,11 @@ pub fn power_loss(points: &[SweepPoint], path: &Path) -> PlotResult {
 
 /// Mode shapes: orbit size √(|X|² + |Y|²) of each node (normalised) against the axial position,
 /// one line per mode, labelled with frequency and whirl.
-pub fn mode_shapes(positions: &[f64], modes: &[super::modes::Mode], path: &Path) -> PlotResult {
+pub fn mode_shapes(
+    positions: &[f64],
+    modes: &[crate::analysis::modes::Mode],
+    path: &Path,
+) -> PlotResult {
     let root = BitMapBackend::new(path, (1000, 600)).into_drawing_area();
     root.fill(&WHITE)?;
     let (z0, z1) = range_of(positions.iter().map(|z| z * 1e3));

@@ -4,15 +4,15 @@
 use nalgebra::DVector;
 
 use super::modes_tests::friswell_5_9_1;
+use crate::analysis::operating::build_bearings;
+use crate::analysis::reduction::{craig_bampton, frequency_error};
+use crate::analysis::statics::equilibrium;
 use crate::bearing::{BearingSpec, LinearBearing};
-use crate::damping::ProportionalDamping;
-use crate::element::{Material, TimoshenkoElement};
-use crate::loads::{GearMesh, Load, LoadSet};
+use crate::model::damping::ProportionalDamping;
+use crate::model::element::{Material, TimoshenkoElement};
+use crate::model::loads::{GearMesh, Load, LoadSet};
+use crate::model::motor::Pmsm;
 use crate::model::{BearingSite, RotorDescription, RotorModel};
-use crate::motor::Pmsm;
-use crate::operating::build_bearings;
-use crate::reduction::{craig_bampton, frequency_error};
-use crate::statics::equilibrium;
 
 const STEEL: Material = Material {
     youngs_modulus: 210e9,

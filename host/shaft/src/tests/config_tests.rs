@@ -3,8 +3,8 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::config::{load_model, parse_model};
-use crate::operating::operating_modes;
+use crate::analysis::operating::operating_modes;
+use crate::model::config::{load_model, parse_model};
 
 fn configs() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs")
@@ -273,7 +273,7 @@ fn ill_conditioned_meshes_are_refused_and_the_allowed_ratio_solves_correctly() {
     let uniform = load_model(&configs().join("friswell_5_9_1.toml")).unwrap();
     let (_, reference) = operating_modes(&uniform, omega, 5, false).unwrap();
     // Just inside the allowed ratio (1 % longer than 1/100 of the 0.25 m elements).
-    let short_m = 1.01 * 0.25 / crate::config::MAX_ELEMENT_LENGTH_RATIO;
+    let short_m = 1.01 * 0.25 / crate::model::config::MAX_ELEMENT_LENGTH_RATIO;
     let split = parse_model(
         Path::new("x/shaft.toml"),
         &friswell_with_short_element(short_m),

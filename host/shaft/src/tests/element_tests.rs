@@ -1,6 +1,6 @@
 //! Element matrices against closed forms.
 
-use crate::element::{Material, TimoshenkoElement};
+use crate::model::element::{Material, TimoshenkoElement};
 
 const STEEL: Material = Material {
     youngs_modulus: 211e9,

@@ -4,10 +4,10 @@
 
 use std::path::Path;
 
+use crate::analysis::operating::{build_bearings, linearise};
+use crate::analysis::statics::equilibrium;
 use crate::bearing::FilmKind;
-use crate::config::load_model;
-use crate::operating::{build_bearings, linearise};
-use crate::statics::equilibrium;
+use crate::model::config::load_model;
 
 /// Largest eigenvalue of the symmetric part of the left bearing's 2×2 stiffness (N/m).
 fn bearing_stiffness(film: FilmKind, rpm: f64) -> f64 {
@@ -55,8 +55,8 @@ fn lubricated_bearing_is_stiffer_than_dry_and_stiffens_with_speed() {
 /// bound allows one step in a hundred to iterate once more).
 #[test]
 fn lubricated_hub_shaft_takes_one_bearing_evaluation_per_step() {
-    use crate::integrator::{NewtonSettings, Scheme};
-    use crate::system::TimeSystem;
+    use crate::analysis::integrator::{NewtonSettings, Scheme};
+    use crate::analysis::system::TimeSystem;
     use nalgebra::DVector;
 
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/shaft_hub_motor.toml");
@@ -103,8 +103,8 @@ fn lubricated_hub_shaft_takes_one_bearing_evaluation_per_step() {
 /// this speed).
 #[test]
 fn lubricated_hub_shaft_runs_from_equilibrium_at_low_speed() {
-    use crate::integrator::{NewtonSettings, Scheme};
-    use crate::simulate::{run, RunSettings};
+    use crate::analysis::integrator::{NewtonSettings, Scheme};
+    use crate::analysis::simulate::{run, RunSettings};
 
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/shaft_hub_motor.toml");
     let model = load_model(&path).unwrap();

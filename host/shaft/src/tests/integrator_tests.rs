@@ -4,12 +4,12 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::modes_tests::friswell_5_9_1;
+use crate::analysis::integrator::{Integrator, NewtonSettings, Scheme, StepError};
+use crate::analysis::modes::undamped_modes;
 use crate::bearing::{
     BearingError, BearingModel, BearingReaction, BearingSpec, BearingState, LinearBearing,
 };
-use crate::integrator::{Integrator, NewtonSettings, Scheme, StepError};
 use crate::model::RotorModel;
-use crate::modes::undamped_modes;
 
 fn linear_bearings(model: &RotorModel) -> Vec<Box<dyn BearingModel>> {
     model

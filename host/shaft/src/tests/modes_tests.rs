@@ -1,12 +1,12 @@
 //! Natural frequencies against Euler–Bernoulli closed forms and Friswell et al. (2010).
 
+use crate::analysis::modes::{damped_modes, undamped_modes, Whirl};
 use crate::bearing::{BearingSpec, LinearBearing};
-use crate::damping::ProportionalDamping;
-use crate::disk::RigidDisk;
-use crate::element::Material;
-use crate::loads::LoadSet;
+use crate::model::damping::ProportionalDamping;
+use crate::model::disk::RigidDisk;
+use crate::model::element::Material;
+use crate::model::loads::LoadSet;
 use crate::model::{BearingSite, RotorDescription, RotorModel};
-use crate::modes::{damped_modes, undamped_modes, Whirl};
 
 const STEEL: Material = Material {
     youngs_modulus: 211e9,

@@ -6,15 +6,15 @@ use std::path::Path;
 
 use nalgebra::DVector;
 
+use crate::analysis::integrator::{NewtonSettings, Scheme};
+use crate::analysis::operating::operating_modes;
+use crate::analysis::simulate::{run, RunSettings};
+use crate::analysis::system::TimeSystem;
 use crate::bearing::{BearingSpec, LinearBearing};
-use crate::config::load_model;
-use crate::integrator::{NewtonSettings, Scheme};
-use crate::loads::{Load, SpinAt};
+use crate::model::config::load_model;
+use crate::model::loads::{Load, SpinAt};
+use crate::model::speed_profile::SpeedProfile;
 use crate::model::RotorModel;
-use crate::operating::operating_modes;
-use crate::simulate::{run, RunSettings};
-use crate::speed_profile::SpeedProfile;
-use crate::system::TimeSystem;
 
 const TEETH: f64 = 17.0;
 
@@ -169,7 +169,7 @@ fn slow_run_up_peaks_at_the_campbell_crossing() {
 /// closed form m e (Ω² cos ψ + Ω̇ sin ψ, Ω² sin ψ − Ω̇ cos ψ) in `loads`).
 #[test]
 fn unbalance_force_during_a_ramp_is_the_inertial_force_of_the_mass() {
-    use crate::loads::LoadSet;
+    use crate::model::loads::LoadSet;
     let (me, phase) = (2e-4, 0.7);
     let set = LoadSet {
         loads: vec![Load::Unbalance {
@@ -219,7 +219,7 @@ fn unbalance_force_during_a_ramp_is_the_inertial_force_of_the_mass() {
 /// Example 5.9.1 rotor, whose disks make the gyroscopic term large.
 #[test]
 fn speed_change_rebuilds_every_operator() {
-    use crate::operating::build_bearings;
+    use crate::analysis::operating::build_bearings;
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/friswell_5_9_1.toml");
     let model = load_model(&path).unwrap();
     let system = TimeSystem::new(&model, None).unwrap();

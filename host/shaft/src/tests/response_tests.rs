@@ -6,12 +6,12 @@
 use nalgebra::{Complex, DMatrix, DVector};
 
 use super::modes_tests::friswell_5_9_1;
+use crate::analysis::integrator::{NewtonSettings, Scheme};
+use crate::analysis::operating::build_bearings;
+use crate::analysis::system::TimeSystem;
 use crate::bearing::{BearingSpec, LinearBearing};
-use crate::integrator::{NewtonSettings, Scheme};
-use crate::loads::{Load, LoadSet};
+use crate::model::loads::{Load, LoadSet};
 use crate::model::RotorModel;
-use crate::operating::build_bearings;
-use crate::system::TimeSystem;
 
 fn damped_unbalanced_rotor() -> RotorModel {
     let mut d = friswell_5_9_1().description;

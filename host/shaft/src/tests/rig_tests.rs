@@ -4,11 +4,11 @@
 
 use std::path::Path;
 
+use crate::analysis::integrator::{NewtonSettings, Scheme};
+use crate::analysis::simulate::{run, RunSettings};
+use crate::analysis::spectrum::amplitude_spectrum;
 use crate::bearing::{BearingSpec, FilmKind};
-use crate::config::load_model;
-use crate::integrator::{NewtonSettings, Scheme};
-use crate::simulate::{run, RunSettings};
-use crate::spectrum::amplitude_spectrum;
+use crate::model::config::load_model;
 
 /// The rig at 14 000 rpm under its 745 N load with the given film: the spectrum of the test
 /// bearing's y displacement, f_bpo (Hz), and the fewest loaded rollers (load > 0) of any

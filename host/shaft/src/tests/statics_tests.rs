@@ -1,13 +1,13 @@
 //! The static equilibrium beyond small displacements: a soft support that sags by millimetres
 //! (closed form), and a rotor with no bearing (refused by name).
 
+use crate::analysis::operating::{build_bearings, operating_modes, OperatingError};
+use crate::analysis::statics::{equilibrium, StaticError};
 use crate::bearing::{BearingSpec, LinearBearing};
-use crate::damping::ProportionalDamping;
-use crate::element::{Material, TimoshenkoElement};
-use crate::loads::{Load, LoadSet};
+use crate::model::damping::ProportionalDamping;
+use crate::model::element::{Material, TimoshenkoElement};
+use crate::model::loads::{Load, LoadSet};
 use crate::model::{BearingSite, RotorDescription, RotorModel};
-use crate::operating::{build_bearings, operating_modes, OperatingError};
-use crate::statics::{equilibrium, StaticError};
 
 const STEEL: Material = Material {
     youngs_modulus: 210e9,

@@ -8,7 +8,7 @@
 
 use bearing_core::OutputView;
 
-use super::bearing::{RollerDiagnostics, RollerState};
+use crate::bearing::{RollerDiagnostics, RollerState};
 
 /// What the shaft needs from one core step.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -4,9 +4,9 @@
 
 use nalgebra::DVector;
 
-use super::bearing::{BearingError, BearingModel, BearingReaction, BearingState};
-use super::model::RotorModel;
-use super::motor::SpeedOutOfRange;
+use crate::bearing::{BearingError, BearingModel, BearingReaction, BearingState};
+use crate::model::motor::SpeedOutOfRange;
+use crate::model::RotorModel;
 
 /// Converged when the largest residual force is below this fraction of the largest load. The
 /// core computes in f32 with a fixed number of film-coupling iterations from a warm start, so

@@ -4,12 +4,12 @@
 
 use rayon::prelude::*;
 
-use super::bearing::{BearingFriction, BearingSpec, FilmKind};
-use super::model::RotorModel;
-use super::operating::{build_bearings, linearise, operating_modes, OperatingError};
-use super::simulate::{run, Envelope, RunError, RunResult, RunSettings};
-use super::spectrum::amplitude_spectrum;
-use super::statics::equilibrium;
+use crate::analysis::operating::{build_bearings, linearise, operating_modes, OperatingError};
+use crate::analysis::simulate::{run, Envelope, RunError, RunResult, RunSettings};
+use crate::analysis::spectrum::amplitude_spectrum;
+use crate::analysis::statics::equilibrium;
+use crate::bearing::{BearingFriction, BearingSpec, FilmKind};
+use crate::model::RotorModel;
 
 /// Natural frequencies kept per speed and side (the lowest, with the bearings linearised).
 pub const SWEEP_MODES: usize = 4;
@@ -36,7 +36,7 @@ pub struct SweepPoint {
     pub lubricated: Envelope,
     /// Envelopes with dry bearings.
     pub dry: Envelope,
-    /// Steadiness measure of the two runs (see [`super::simulate::STEADY_TOLERANCE`]).
+    /// Steadiness measure of the two runs (see [`crate::analysis::simulate::STEADY_TOLERANCE`]).
     pub steadiness: [f64; 2],
     /// Wall time of the two runs (s) and simulated time per run (s).
     pub wall_seconds: f64,

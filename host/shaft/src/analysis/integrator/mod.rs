@@ -36,7 +36,7 @@ use nalgebra::{DMatrix, DVector};
 /// Most bearings one rotor may have (the Newton system is solved on the stack).
 pub const MAX_BEARINGS: usize = 8;
 
-use super::bearing::{BearingError, BearingModel, BearingReaction};
+use crate::bearing::{BearingError, BearingModel, BearingReaction};
 
 /// Time-integration scheme.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -5,7 +5,10 @@
 //! Outer races sit in a rigid housing, so the bearing acts on the x and y DOFs of its node only.
 //! Two implementations: [`LinearBearing`] (spring–damper, possibly anisotropic and cross-coupled;
 //! used for the textbook cases) and the nonlinear roller bearing of the no_std core, reached
-//! through [`roller_bearing`] (adapter in [`super::roller_bearing`]).
+//! through [`roller_bearing`] (adapter in [`crate::bearing::roller_bearing`]).
+
+pub mod core_bearing;
+pub mod roller_bearing;
 
 use std::path::{Path, PathBuf};
 
@@ -181,9 +184,9 @@ impl BearingSpec {
 }
 
 /// Constructor hook for the core's roller bearing: the bearing TOML at `path` (see
-/// `bearing_host_common::config`) with the given film model, through [`super::roller_bearing::RollerBearing`].
+/// `bearing_host_common::config`) with the given film model, through [`crate::bearing::roller_bearing::RollerBearing`].
 pub fn roller_bearing(path: &Path, film: FilmKind) -> Result<Box<dyn BearingModel>, BearingError> {
-    Ok(Box::new(super::roller_bearing::RollerBearing::from_file(
-        path, film,
-    )?))
+    Ok(Box::new(
+        crate::bearing::roller_bearing::RollerBearing::from_file(path, film)?,
+    ))
 }

@@ -42,8 +42,8 @@ use std::path::{Path, PathBuf};
 use bearing_host_common::toml_lines::{line_at, TomlLines};
 use serde::Deserialize;
 
-use super::bearing::FilmKind;
-use super::model::RotorModel;
+use crate::bearing::FilmKind;
+use crate::model::RotorModel;
 
 mod describe;
 mod locator;

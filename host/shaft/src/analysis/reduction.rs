@@ -14,8 +14,8 @@
 
 use nalgebra::DMatrix;
 
-use super::model::RotorModel;
-use super::modes::{undamped_modes, ModesError};
+use crate::analysis::modes::{undamped_modes, ModesError};
+use crate::model::RotorModel;
 
 /// A reduced model: transformation and reduced matrices.
 #[derive(Debug, Clone)]

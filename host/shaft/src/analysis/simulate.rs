@@ -9,14 +9,14 @@
 
 use nalgebra::DVector;
 
-use super::bearing::{BearingReaction, BearingSpec, RollerState};
-use super::integrator::{NewtonSettings, Scheme, StepError, StepTotals};
-use super::loads::SpinAt;
-use super::model::RotorModel;
-use super::operating::{build_bearings, OperatingError};
-use super::speed_profile::SpeedProfile;
-use super::statics::equilibrium;
-use super::system::TimeSystem;
+use crate::analysis::integrator::{NewtonSettings, Scheme, StepError, StepTotals};
+use crate::analysis::operating::{build_bearings, OperatingError};
+use crate::analysis::statics::equilibrium;
+use crate::analysis::system::TimeSystem;
+use crate::bearing::{BearingReaction, BearingSpec, RollerState};
+use crate::model::loads::SpinAt;
+use crate::model::speed_profile::SpeedProfile;
+use crate::model::RotorModel;
 
 /// Where the wall time of a run went, per step.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]

@@ -2,18 +2,26 @@
 //! material damping and loads, with the global mass M, stiffness K, gyroscopic G and damping C
 //! matrices (dense; rotors of this project have ≤ a few hundred DOFs).
 //!
-//! Global DOF of node i: 4i + {0: x, 1: y, 2: θx, 3: θy} (see [`super::element`]). The equation
+//! Global DOF of node i: 4i + {0: x, 1: y, 2: θx, 3: θy} (see [`crate::model::element`]). The equation
 //! of motion with the spin speed Ω held constant (Friswell et al. (2010) eq. (5.1) form):
 //!
 //!   M q̈ + (C + Ω G) q̇ + K q = f(t) + Σ_bearings Pᵀ F_b(P q, P q̇)
 
+pub mod config;
+pub mod damping;
+pub mod disk;
+pub mod element;
+pub mod loads;
+pub mod motor;
+pub mod speed_profile;
+
 use nalgebra::{DMatrix, DVector};
 
-use super::bearing::BearingSpec;
-use super::damping::ProportionalDamping;
-use super::disk::RigidDisk;
-use super::element::{Material, TimoshenkoElement};
-use super::loads::LoadSet;
+use crate::bearing::BearingSpec;
+use crate::model::damping::ProportionalDamping;
+use crate::model::disk::RigidDisk;
+use crate::model::element::{Material, TimoshenkoElement};
+use crate::model::loads::LoadSet;
 
 /// DOFs per node.
 pub const DOF_PER_NODE: usize = 4;

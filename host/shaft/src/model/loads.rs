@@ -1,5 +1,5 @@
 //! External loads on the shaft: static forces, gravity, mass unbalance and the spur-gear mesh
-//! driven by the PMSM ([`super::motor`]).
+//! driven by the PMSM ([`crate::model::motor`]).
 //!
 //! Gear mesh (docs/physics.md §6.2): the pinion of pitch radius r_p = m·z/2 transmits the motor torque
 //! T(t), so the tangential tooth force is F_t = T/r_p and the separating (radial) force
@@ -14,7 +14,7 @@
 //! during a speed ramp the angular acceleration adds the tangential m·e·Ω̇ term (the inertial
 //! force of the eccentric mass, −m d²/dt² [e(cos ψ, sin ψ)]).
 
-use super::motor::Pmsm;
+use crate::model::motor::Pmsm;
 
 /// One load of the shaft model.
 #[derive(Debug, Clone, PartialEq)]
@@ -115,7 +115,7 @@ impl LoadSet {
         gravity_vector: &[f64],
         include_dynamic: bool,
         f: &mut [f64],
-    ) -> Result<(), super::motor::SpeedOutOfRange> {
+    ) -> Result<(), crate::model::motor::SpeedOutOfRange> {
         self.add_forces_mapped(time, spin_speed, gravity_vector, include_dynamic, &|d| d, f)
     }
 
@@ -130,7 +130,7 @@ impl LoadSet {
         include_dynamic: bool,
         map: &dyn Fn(usize) -> usize,
         f: &mut [f64],
-    ) -> Result<(), super::motor::SpeedOutOfRange> {
+    ) -> Result<(), crate::model::motor::SpeedOutOfRange> {
         let at = SpinAt {
             angle: spin_speed * time,
             speed: spin_speed,
@@ -149,7 +149,7 @@ impl LoadSet {
         include_dynamic: bool,
         map: &dyn Fn(usize) -> usize,
         f: &mut [f64],
-    ) -> Result<(), super::motor::SpeedOutOfRange> {
+    ) -> Result<(), crate::model::motor::SpeedOutOfRange> {
         let (angle, spin_speed) = (at.angle, at.speed);
         for load in &self.loads {
             match *load {

@@ -16,10 +16,10 @@ use std::path::Path;
 use bearing_core::bearing::SETTLE_STEPS;
 use bearing_core::{DynBearing, FilmKind, OperatingState, OutputView, ParamError};
 
-use super::bearing::{
+use crate::bearing::core_bearing::{roller_states, summarise};
+use crate::bearing::{
     BearingError, BearingFriction, BearingModel, BearingReaction, BearingState, RollerState,
 };
-use super::core_bearing::{roller_states, summarise};
 use bearing_host_common::config::BearingConfig;
 use bearing_host_common::friction::{bearing_friction_at_loads, LoadSharing};
 use bearing_host_common::rolling::boxed;

@@ -6,12 +6,12 @@ use std::path::Path;
 use super::locator::Locator;
 use super::{ConfigError, ShaftFile};
 use crate::bearing::{BearingSpec, LinearBearing};
-use crate::damping::ProportionalDamping;
-use crate::disk::RigidDisk;
-use crate::element::Material;
-use crate::loads::{GearMesh, Load, LoadSet};
+use crate::model::damping::ProportionalDamping;
+use crate::model::disk::RigidDisk;
+use crate::model::element::Material;
+use crate::model::loads::{GearMesh, Load, LoadSet};
+use crate::model::motor::Pmsm;
 use crate::model::{BearingSite, RotorDescription};
-use crate::motor::Pmsm;
 
 /// Largest Young's modulus accepted (Pa): diamond's, ≈ 1.2 TPa, the stiffest bulk solid.
 const MAX_YOUNGS_MODULUS_PA: f64 = 1.2e12;
@@ -26,7 +26,7 @@ const MAX_DENSITY_KG_M3: f64 = 2.3e4;
 const MAX_SECTION_DIAMETER_M: f64 = 10.0;
 /// Largest ratio of the longest to the shortest element. A short element's stiffness grows as
 /// 1/L (shear) to 1/L³ (bending) while its mass shrinks as L, so the eigenproblem spans more
-/// decades as the ratio grows; the state-space Schur solve of [`crate::modes`] then loses the
+/// decades as the ratio grows; the state-space Schur solve of [`crate::analysis::modes`] then loses the
 /// low modes. Measured on configs/friswell_5_9_1.toml with its last element split (5th mode
 /// at 4000 rpm, published 600.18 rad/s): ratio 100 → 0.003 % off, 250 → 0.03 %, 1000 → 0.6 %,
 /// 2500 → 7 %, 2.5·10⁵ (a 1 µm element) → the first mode at 1267 rad/s instead of 85.4.
@@ -420,15 +420,15 @@ pub(super) fn describe(loc: &Locator<'_>, f: ShaftFile) -> Result<RotorDescripti
         bearings.push(BearingSite { node, spec });
     }
 
-    if bearings.len() > crate::integrator::MAX_BEARINGS {
+    if bearings.len() > crate::analysis::integrator::MAX_BEARINGS {
         return Err(loc.err(
             "bearing",
-            crate::integrator::MAX_BEARINGS,
+            crate::analysis::integrator::MAX_BEARINGS,
             "node",
             format!(
                 "{} bearings: at most {} are supported",
                 bearings.len(),
-                crate::integrator::MAX_BEARINGS
+                crate::analysis::integrator::MAX_BEARINGS
             ),
         ));
     }

@@ -5,12 +5,12 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::bearing::BearingModel;
-use super::integrator::{Integrator, NewtonSettings, Scheme, StepError};
-use super::model::RotorModel;
-use super::modes::ModesError;
-use super::motor::SpeedOutOfRange;
-use super::reduction::{craig_bampton, ReducedModel};
+use crate::analysis::integrator::{Integrator, NewtonSettings, Scheme, StepError};
+use crate::analysis::modes::ModesError;
+use crate::analysis::reduction::{craig_bampton, ReducedModel};
+use crate::bearing::BearingModel;
+use crate::model::motor::SpeedOutOfRange;
+use crate::model::RotorModel;
 
 /// Full or reduced equations of motion of one rotor.
 pub struct TimeSystem<'a> {
@@ -124,7 +124,7 @@ impl<'a> TimeSystem<'a> {
     /// (overwritten): as [`TimeSystem::load`] for a speed that changes in time.
     pub fn load_at(
         &self,
-        at: super::loads::SpinAt,
+        at: crate::model::loads::SpinAt,
         f: &mut DVector<f64>,
     ) -> Result<(), SpeedOutOfRange> {
         f.fill(0.0);
@@ -152,7 +152,7 @@ impl<'a> TimeSystem<'a> {
             .loads
             .iter()
             .map(|l| match l {
-                super::loads::Load::Gravity { acceleration } => *acceleration,
+                crate::model::loads::Load::Gravity { acceleration } => *acceleration,
                 _ => 0.0,
             })
             .sum();

@@ -1,12 +1,12 @@
 //! Modes at an operating point and the Campbell diagram: the bearings are linearised at the
 //! static equilibrium of the running speed (their tangent stiffness and damping, −∂F/∂u and
 //! −∂F/∂u̇), the gyroscopic matrix is scaled by that speed, and the state-space eigenproblem of
-//! [`super::modes`] is solved (Friswell et al. (2010) §5.8: Campbell diagrams).
+//! [`crate::analysis::modes`] is solved (Friswell et al. (2010) §5.8: Campbell diagrams).
 
-use super::bearing::{BearingError, BearingModel, BearingReaction, BearingState};
-use super::model::RotorModel;
-use super::modes::{damped_modes, Mode, ModesError};
-use super::statics::{equilibrium, Equilibrium, StaticError};
+use crate::analysis::modes::{damped_modes, Mode, ModesError};
+use crate::analysis::statics::{equilibrium, Equilibrium, StaticError};
+use crate::bearing::{BearingError, BearingModel, BearingReaction, BearingState};
+use crate::model::RotorModel;
 
 /// Errors of the operating-point analyses.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -81,7 +81,7 @@ pub struct CampbellPoint {
     /// Damping ratios.
     pub damping_ratios: Vec<f64>,
     /// Whirl direction of each mode.
-    pub whirl: Vec<super::modes::Whirl>,
+    pub whirl: Vec<crate::analysis::modes::Whirl>,
 }
 
 /// Campbell diagram over the given speeds (rpm); shapes are computed to classify the whirl.
