@@ -6,7 +6,7 @@
 //! 0xCBF43926. Byte-wise table lookup: 256 words built at compile time, so the firmware pays
 //! 1 KiB of flash and one lookup per byte.
 //!
-//! This file uses nothing from `std`: the firmware includes it with `#[path]` so that host and
+//! This file uses nothing from `std`: the firmware uses it through this crate, so that host and
 //! firmware check the same sum with the same code.
 
 /// Reflected generator polynomial of CRC-32/ISO-HDLC.

@@ -1,5 +1,5 @@
 //! The step kernel: what happens to one trace sample, identically on the host and on the
-//! Cortex-M4 firmware (which includes this file with `#[path]`).
+//! Cortex-M4 firmware (which depends on this crate, `bearing-hil-kernel`).
 //!
 //! It maps the trace's bearing and lubricant identifiers to the core's presets
 //! ([`BearingDesign::HUB_MOTOR`], [`BearingDesign::NU205`]: the parameters of
@@ -271,8 +271,5 @@ fn copy_output<const Z: usize>(
     Ok(())
 }
 
-// The explicit path keeps the test module findable when the firmware includes this file from
-// another crate (rustfmt resolves it there too).
 #[cfg(test)]
-#[path = "kernel/tests.rs"]
 mod tests;

@@ -23,7 +23,7 @@
 //! reads them in chunks over semihosting) can trust the count and the flags before reading any
 //! record, and checks the records' checksum when the stream ends.
 //!
-//! This file uses nothing from `std` (no allocation): the firmware includes it with `#[path]`
+//! This file uses nothing from `std` (no allocation): the firmware uses it through this crate,
 //! next to `crc32.rs`, so host and firmware decode with the same code.
 
 use super::crc32::{crc32, Crc32};
