@@ -9,7 +9,7 @@
 
 use nalgebra::DVector;
 
-use crate::analysis::integrator::{NewtonSettings, Scheme, StepError, StepTotals};
+use crate::analysis::integrator::{Integrator, NewtonSettings, Scheme, StepError, StepTotals};
 use crate::analysis::operating::{build_bearings, OperatingError};
 use crate::analysis::statics::equilibrium;
 use crate::analysis::system::TimeSystem;
@@ -236,21 +236,7 @@ pub fn run(
         z0,
         DVector::zeros(n),
     )?;
-    let mut probe_nodes: Vec<usize> = model.description.bearings.iter().map(|b| b.node).collect();
-    probe_nodes.extend(
-        model
-            .description
-            .loads
-            .loads
-            .iter()
-            .filter_map(|l| l.node()),
-    );
-    let mut seen = Vec::new();
-    probe_nodes.retain(|n| {
-        let fresh = !seen.contains(n);
-        seen.push(*n);
-        fresh
-    });
+    let probe_nodes = probe_nodes(model);
     let bearing_idx: Vec<[usize; 2]> = model
         .bearing_dofs()
         .iter()
@@ -302,31 +288,77 @@ pub fn run(
             .collect();
         halves[usize::from(2 * k >= record_steps)].absorb(&disp, &acc, &it.reactions);
         if k % settings.record_every.max(1) == 0 {
-            let probes = probe_nodes
-                .iter()
-                .map(|&node| {
-                    let g = |z: &DVector<f64>, c: usize| system.global(z, 4 * node + c);
-                    [
-                        [g(&st.q, 0), g(&st.q, 1)],
-                        [g(&st.v, 0), g(&st.v, 1)],
-                        [g(&st.a, 0), g(&st.a, 1)],
-                    ]
-                })
-                .collect();
-            samples.push(Sample {
-                time: st.time,
-                spin_speed: it.spin_speed(),
-                probes,
-                bearings: it.reactions.clone(),
-                rollers: it
-                    .bearing_models()
-                    .iter()
-                    .map(|b| b.roller_states())
-                    .collect(),
-            });
+            samples.push(sample(&it, &system, &probe_nodes));
         }
     }
     let wall_seconds = clock.elapsed().as_secs_f64();
+    let (envelope, steadiness) = merge_halves(halves);
+    Ok(RunResult {
+        probe_nodes,
+        samples,
+        envelope,
+        steadiness,
+        steps: settle_steps + record_steps,
+        n_dof: n,
+        wall_seconds,
+        bearing_seconds: it.totals.bearing_seconds,
+        totals: it.totals,
+        max_newton_iterations: max_iter,
+        resolution_limited_steps: limited,
+    })
+}
+
+/// The probed nodes: the bearing nodes, then the loaded nodes, each once, in that order.
+fn probe_nodes(model: &RotorModel) -> Vec<usize> {
+    let mut probe_nodes: Vec<usize> = model.description.bearings.iter().map(|b| b.node).collect();
+    probe_nodes.extend(
+        model
+            .description
+            .loads
+            .loads
+            .iter()
+            .filter_map(|l| l.node()),
+    );
+    let mut seen = Vec::new();
+    probe_nodes.retain(|n| {
+        let fresh = !seen.contains(n);
+        seen.push(*n);
+        fresh
+    });
+    probe_nodes
+}
+
+/// One recorded sample of the integrator's current state: the probes' displacement, velocity
+/// and acceleration in physical coordinates, the bearing reactions and the roller states.
+fn sample(it: &Integrator, system: &TimeSystem, probe_nodes: &[usize]) -> Sample {
+    let st = &it.state;
+    let probes = probe_nodes
+        .iter()
+        .map(|&node| {
+            let g = |z: &DVector<f64>, c: usize| system.global(z, 4 * node + c);
+            [
+                [g(&st.q, 0), g(&st.q, 1)],
+                [g(&st.v, 0), g(&st.v, 1)],
+                [g(&st.a, 0), g(&st.a, 1)],
+            ]
+        })
+        .collect();
+    Sample {
+        time: st.time,
+        spin_speed: it.spin_speed(),
+        probes,
+        bearings: it.reactions.clone(),
+        rollers: it
+            .bearing_models()
+            .iter()
+            .map(|b| b.roller_states())
+            .collect(),
+    }
+}
+
+/// The envelope of the whole record from those of its two halves, and the steadiness: the
+/// relative change of the peak displacement from the first half to the second.
+fn merge_halves(halves: [Envelope; 2]) -> (Envelope, f64) {
     let [first, second] = halves;
     let steadiness = (second.max_displacement_m - first.max_displacement_m).abs()
         / first
@@ -354,17 +386,5 @@ pub fn run(
         second.max_contact_stiffness_n_per_m,
     );
     envelope.max_central_film_m = merge(first.max_central_film_m, second.max_central_film_m);
-    Ok(RunResult {
-        probe_nodes,
-        samples,
-        envelope,
-        steadiness,
-        steps: settle_steps + record_steps,
-        n_dof: n,
-        wall_seconds,
-        bearing_seconds: it.totals.bearing_seconds,
-        totals: it.totals,
-        max_newton_iterations: max_iter,
-        resolution_limited_steps: limited,
-    })
+    (envelope, steadiness)
 }
