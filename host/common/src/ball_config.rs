@@ -40,6 +40,19 @@ pub struct BallBearingConfig {
     /// Default operating case of the commands.
     #[serde(default)]
     pub case: BallCaseConfig,
+    /// High-speed options.
+    #[serde(default)]
+    pub high_speed: BallHighSpeedConfig,
+}
+
+/// `[high_speed]`.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct BallHighSpeedConfig {
+    /// The balls' centrifugal force (inner and outer contact angles and loads then differ);
+    /// off when absent.
+    #[serde(default)]
+    pub centrifugal: bool,
 }
 
 /// `[ball]`: the geometry.
@@ -220,6 +233,7 @@ impl BallBearingConfig {
             viscosity_pa_s: self.lubricant.viscosity_pa_s,
             pressure_viscosity_pa_inv: self.lubricant.pressure_viscosity_pa_inv,
             damping_factor_s: self.model.damping_factor_s,
+            centrifugal: self.high_speed.centrifugal,
         }
     }
 }

@@ -23,16 +23,21 @@
 //!   F = −Σ_j Q_j (cos α cos ψ, cos α sin ψ, sin α) and the moments M_x = −Σ Q sin α R_i sin ψ,
 //!   M_y = Σ Q sin α R_i cos ψ (by virtual work on δ_z, so the stiffness is symmetric).
 //!
-//! The centrifugal force of the balls (which separates the inner and outer contact angles at
-//! high speed) and ball spin and gyroscopic moments are not modelled here
-//! (docs/ball_bearings.md, limits).
+//! With `centrifugal` on ([`BallBearingDesign::centrifugal`]) each ball also carries its
+//! centrifugal force, and its centre is solved between the grooves so that the inner and outer
+//! contact angles and loads differ ([`centrifugal`]); off, the outputs are those above. Ball
+//! spin and gyroscopic moments are not modelled (docs/ball_bearings.md, limits).
 
+mod centrifugal;
+#[cfg(test)]
+mod centrifugal_tests;
 mod contact;
 mod params;
 mod statics;
 #[cfg(test)]
 mod tests;
 
+pub use centrifugal::NEWTON_STEPS as CENTRIFUGAL_NEWTON_STEPS;
 pub use params::{BallBearingDesign, BallBearingKind, BallBearingParams};
 pub use statics::{BallLoad, StaticSolution, StaticSolveError};
 
@@ -276,6 +281,7 @@ impl<const Z: usize> BallBearing<Z> {
             balls,
             ..
         } = &mut out;
+        let (mut orbital_weighted, mut orbital_weight) = (0.0_f32, 0.0_f32);
         let mut totals = Totals {
             force_n,
             moment_nm,
@@ -305,22 +311,46 @@ impl<const Z: usize> BallBearing<Z> {
                 distance - p.centre_distance_m,
             );
             let contact = self.ball_contact(nr, approach, omega);
-            *ball = BallOutput {
-                azimuth_rad: azimuth,
-                contact_angle_rad: [atan2(a_z, a_r); 2],
-                ..contact
-            };
-            let q = ball.load_n[0];
-            let k_n = ball.stiffness_n_per_m;
-            // Normal and transverse stiffness in (r, z): k_n n nᵀ + (Q/A)(I − n nᵀ).
-            let k_t = q / distance;
-            let local = [
-                [k_n * nr * nr + k_t * (1.0 - nr * nr), (k_n - k_t) * nr * nz],
-                [(k_n - k_t) * nr * nz, k_n * nz * nz + k_t * (1.0 - nz * nz)],
-            ];
-            let rate = nr * dot(&jr, &state.velocity) + nz * dot(&jz, &state.velocity);
-            let total = q + p.damping_factor_s * k_n * rate;
-            totals.add([jr, jz], [nr, nz], local, total, p.damping_factor_s * k_n);
+            if p.centrifugal {
+                let solved = self.ball_centrifugal([a_r, a_z], nr, &contact, omega);
+                *ball = BallOutput {
+                    azimuth_rad: azimuth,
+                    ..solved.output
+                };
+                let k_n = ball.stiffness_n_per_m;
+                let [n_r, n_z] = solved.normal;
+                let rate = n_r * dot(&jr, &state.velocity) + n_z * dot(&jz, &state.velocity);
+                let total = ball.load_n[0] + p.damping_factor_s * k_n * rate;
+                let damping = p.damping_factor_s * k_n;
+                totals.add([jr, jz], solved.normal, solved.local, total, damping);
+                orbital_weighted += ball.load_n[0] * solved.orbital_rad_s;
+                orbital_weight += ball.load_n[0];
+            } else {
+                *ball = BallOutput {
+                    azimuth_rad: azimuth,
+                    contact_angle_rad: [atan2(a_z, a_r); 2],
+                    ..contact
+                };
+                let q = ball.load_n[0];
+                let k_n = ball.stiffness_n_per_m;
+                // Normal and transverse stiffness in (r, z): k_n n nᵀ + (Q/A)(I − n nᵀ).
+                let k_t = q / distance;
+                let local = [
+                    [k_n * nr * nr + k_t * (1.0 - nr * nr), (k_n - k_t) * nr * nz],
+                    [(k_n - k_t) * nr * nz, k_n * nz * nz + k_t * (1.0 - nz * nz)],
+                ];
+                let rate = nr * dot(&jr, &state.velocity) + nz * dot(&jz, &state.velocity);
+                let total = q + p.damping_factor_s * k_n * rate;
+                totals.add([jr, jz], [nr, nz], local, total, p.damping_factor_s * k_n);
+            }
+        }
+        if p.centrifugal {
+            // The loaded balls' mean orbital speed; the kinematic one when none is loaded.
+            out.cage_speed_rad_s = select(
+                orbital_weight > 0.0,
+                orbital_weighted / max(orbital_weight, f32::MIN_POSITIVE),
+                out.cage_speed_rad_s,
+            );
         }
         Ok(out)
     }

@@ -52,6 +52,9 @@ pub struct BallBearingDesign {
     /// Damping factor f_damp (s, 0 … 10⁻³): a loaded ball's contact damps with f_damp times
     /// its contact stiffness, as a roller does (docs/physics.md §4).
     pub damping_factor_s: f32,
+    /// Include the balls' centrifugal force F_c = ½ m d_m ω_c² (high speed; the inner and outer
+    /// contact angles and loads then differ). Off: the outputs are those of the model without it.
+    pub centrifugal: bool,
 }
 
 impl BallBearingDesign {
@@ -74,6 +77,7 @@ impl BallBearingDesign {
         viscosity_pa_s: 0.08,
         pressure_viscosity_pa_inv: 2.1e-8,
         damping_factor_s: 1.0e-5,
+        centrifugal: false,
     };
 
     /// The angular-contact bearing 7205 with a 40° contact angle (bore 25 mm, outside 52 mm,
@@ -177,6 +181,7 @@ impl BallBearingDesign {
             viscosity_pa_s: eta,
             pressure_viscosity_pa_inv: alpha,
             damping_factor_s: damping,
+            centrifugal: self.centrifugal,
         })
     }
 }
@@ -207,9 +212,22 @@ pub struct BallBearingParams {
     pub(super) viscosity_pa_s: f32,
     pub(super) pressure_viscosity_pa_inv: f32,
     pub(super) damping_factor_s: f32,
+    /// Whether the balls' centrifugal force is included.
+    pub(super) centrifugal: bool,
 }
 
 impl BallBearingParams {
+    /// Whether the balls' centrifugal force is included.
+    pub fn centrifugal(&self) -> bool {
+        self.centrifugal
+    }
+    /// The same bearing with the balls' centrifugal force switched on or off.
+    pub fn with_centrifugal(self, centrifugal: bool) -> Self {
+        Self {
+            centrifugal,
+            ..self
+        }
+    }
     /// Deep-groove or angular-contact.
     pub fn kind(&self) -> BallBearingKind {
         self.kind
