@@ -200,3 +200,38 @@ fn film_of_both_ball_contacts() {
     ]);
     assert!(!ok && err.contains("--ball-load"), "{err}");
 }
+
+/// `--centrifugal on` at speed separates the inner and outer contact angles of the preloaded
+/// 7205 (the inner rises, the outer falls), and leaves them equal at rest.
+#[test]
+fn centrifugal_switch_splits_the_contact_angles() {
+    let cfg = config("angular_7205.toml");
+    let angles = |rpm: &str, on: &str| {
+        let v = json(&[
+            "static",
+            "--config",
+            &cfg,
+            "--radial-load",
+            "0",
+            "--axial-load",
+            "500",
+            "--speed-rpm",
+            rpm,
+            "--centrifugal",
+            on,
+            "--json",
+        ]);
+        let b = &v["balls"][0];
+        (
+            b["contact_angle_inner_deg"].as_f64().unwrap(),
+            b["contact_angle_outer_deg"].as_f64().unwrap(),
+        )
+    };
+    let (i_off, o_off) = angles("20000", "off");
+    assert!((i_off - o_off).abs() < 1e-6);
+    let (i_on, o_on) = angles("20000", "on");
+    assert!(
+        i_on > i_off && o_on < o_off,
+        "{i_on} {o_on} against {i_off}"
+    );
+}

@@ -42,6 +42,10 @@ pub struct BallStaticArgs {
     /// instead of a static solve.
     #[arg(long, allow_hyphen_values = true, value_parser = displacement, value_name = "X,Y,Z,TX,TY")]
     pub displacement: Option<[f64; 5]>,
+    /// Ball bearings: the balls' centrifugal force on or off (default: the config's
+    /// `[high_speed] centrifugal`).
+    #[arg(long, value_parser = ["on", "off"])]
+    pub centrifugal: Option<String>,
 }
 
 /// clap value parser: a finite number of any sign.
@@ -80,6 +84,7 @@ impl BallStaticArgs {
             ("--moment-x-nm", self.moment_x_nm.is_some()),
             ("--moment-y-nm", self.moment_y_nm.is_some()),
             ("--displacement", self.displacement.is_some()),
+            ("--centrifugal", self.centrifugal.is_some()),
         ];
         if let Some((flag, _)) = given.iter().find(|(_, g)| *g) {
             bail!("{flag} applies to ball bearings only (a config with a [ball] table)");
@@ -92,6 +97,10 @@ impl BallStaticArgs {
 pub fn run(args: &StaticArgs) -> anyhow::Result<()> {
     let b = &args.ball;
     let (config, params) = BallBearingConfig::load(&args.config)?;
+    let params = match b.centrifugal.as_deref() {
+        Some(on) => params.with_centrifugal(on == "on"),
+        None => params,
+    };
     let rpm = args
         .speed_rpm
         .or(config.case.speed_rpm.map(f64::from))
