@@ -1,11 +1,11 @@
 //! `bearing`: the command-line front end of the host tools.
 //!
-//! Every subcommand lives in its own module under `cli/` with a clap `Args` type and a
+//! Every subcommand lives in its own folder under `commands/` with a clap `Args` type and a
 //! `run` function; this file only dispatches.
 
 use clap::Subcommand;
 
-mod cli;
+mod commands;
 
 #[derive(clap::Parser)]
 #[command(
@@ -21,24 +21,24 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Film thickness and Hertz figures of one contact, every film model side by side.
-    Film(cli::film::FilmArgs),
+    Film(commands::film::FilmArgs),
     /// Static equilibrium of a bearing under a radial load (lubricated, and dry with --dry).
-    Static(cli::statics::StaticArgs),
+    Static(commands::statics::StaticArgs),
     /// Stribeck curve of a bearing (friction torque and power loss against speed) or of one
     /// contact (friction coefficient against speed).
-    Friction(cli::friction::FrictionArgs),
+    Friction(commands::friction::FrictionArgs),
     /// Flexible-shaft simulator: static, modes, campbell, run, sweep.
-    Shaft(cli::shaft::ShaftArgs),
+    Shaft(commands::shaft::ShaftArgs),
     /// Film training data: generate datasets, check the domain.
-    Dataset(cli::dataset::DatasetArgs),
+    Dataset(commands::dataset::DatasetArgs),
     /// Train the film network, run the architecture sweep, evaluate the core models.
-    Train(Box<cli::train::TrainArgs>),
+    Train(Box<commands::train::TrainArgs>),
     /// Write a trained film model into the core as const arrays.
-    Export(cli::export::ExportArgs),
+    Export(commands::export::ExportArgs),
     /// Full numerical EHL line-contact solver.
-    Ehl(cli::ehl::EhlArgs),
+    Ehl(commands::ehl::EhlArgs),
     /// FMI 2.0 co-simulation FMU of a bearing file: export.
-    Fmu(cli::fmu::FmuArgs),
+    Fmu(commands::fmu::FmuArgs),
 }
 
 fn main() -> std::process::ExitCode {
@@ -49,15 +49,15 @@ fn main() -> std::process::ExitCode {
     }
     let cli: Cli = bearing_host_common::args::parse();
     let result: anyhow::Result<()> = match cli.command {
-        Command::Film(args) => cli::film::run(args),
-        Command::Static(args) => cli::statics::run(args),
-        Command::Friction(args) => cli::friction::run(args),
-        Command::Shaft(args) => cli::shaft::run(args),
-        Command::Dataset(args) => cli::dataset::run(args),
-        Command::Train(args) => cli::train::run(*args),
-        Command::Export(args) => cli::export::run(args),
-        Command::Ehl(args) => cli::ehl::run(args),
-        Command::Fmu(args) => cli::fmu::run(args),
+        Command::Film(args) => commands::film::run(args),
+        Command::Static(args) => commands::statics::run(args),
+        Command::Friction(args) => commands::friction::run(args),
+        Command::Shaft(args) => commands::shaft::run(args),
+        Command::Dataset(args) => commands::dataset::run(args),
+        Command::Train(args) => commands::train::run(*args),
+        Command::Export(args) => commands::export::run(args),
+        Command::Ehl(args) => commands::ehl::run(args),
+        Command::Fmu(args) => commands::fmu::run(args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

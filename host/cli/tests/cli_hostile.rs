@@ -190,6 +190,34 @@ fn a_negative_value_is_refused_by_its_flag_with_the_range() {
     );
 }
 
+/// Minus infinity and minus NaN (which clap does not count as numbers) are values of a
+/// floating-point flag too: the refusal names the flag and its range.
+#[test]
+fn minus_infinity_is_refused_by_its_flag_with_the_range() {
+    for (args, flag, range) in [
+        (
+            &["film", "--load", "-inf"][..],
+            "'--load <LOAD>'",
+            "finite number > 0",
+        ),
+        (
+            &["film", "--load", "-nan"][..],
+            "'--load <LOAD>'",
+            "finite number > 0",
+        ),
+        (
+            &["static", "--radial-load", "-inf"][..],
+            "'--radial-load <RADIAL_LOAD>'",
+            "finite number >= 0",
+        ),
+    ] {
+        let (ok, _, err) = bearing(args);
+        assert!(!ok, "{args:?}");
+        assert!(err.contains(flag) && err.contains(range), "{args:?}: {err}");
+        assert!(!err.contains("unexpected argument"), "{args:?}: {err}");
+    }
+}
+
 /// `bearing film` refuses speeds the core refuses, loads steel does not carry (peak Hertz
 /// pressure above 4 GPa), values single precision cannot hold and α outside lubricating oils,
 /// each naming the flag and the allowed range.

@@ -8,10 +8,10 @@ use bearing_host_common::ball_config::{ball_query, BallBearingConfig, BallQuery,
 use clap::Args;
 use serde_json::json;
 
-use super::common::{print_json, rad_per_s};
-use super::film::max_speed_rpm;
-use super::film_point::source_name;
-use super::statics::{value_source, StaticArgs};
+use super::{value_source, StaticArgs};
+use crate::commands::common::{print_json, rad_per_s};
+use crate::commands::film::max_speed_rpm;
+use crate::commands::film::point::source_name;
 
 /// The flags of `bearing static` that apply to ball bearings.
 #[derive(Args, Debug, Default)]

@@ -1,7 +1,7 @@
 //! `bearing film --plot`: central film of every film model against load or entrainment speed,
 //! with each model's error against the numerical solution, as a PNG.
 
-use super::film::numerical_solution;
+use super::numerical_solution;
 use anyhow::{anyhow, Result};
 use bearing_core::film::ann::{AnnF32, AnnInt};
 use bearing_core::{ContactInput, FilmModel, FilmSource, Regression};

@@ -8,8 +8,10 @@ use bearing_core::{DynBearing, FilmKind, OperatingState};
 use clap::Args;
 use serde_json::json;
 
-use super::common::{non_negative, print_json, rad_per_s};
-use super::film::{max_load_n, max_speed_rpm, MAX_HERTZ_PRESSURE_PA};
+mod ball;
+
+use crate::commands::common::{non_negative, print_json, rad_per_s};
+use crate::commands::film::{max_load_n, max_speed_rpm, MAX_HERTZ_PRESSURE_PA};
 use bearing_host_common::config::BearingConfig;
 use bearing_host_common::rolling::{boxed, StepSnapshot};
 
@@ -24,7 +26,7 @@ pub struct StaticArgs {
     #[arg(long, value_parser = non_negative)]
     pub radial_load: Option<f64>,
     #[command(flatten)]
-    pub ball: super::statics_ball::BallStaticArgs,
+    pub ball: ball::BallStaticArgs,
     /// Shaft speed (rpm); default: the config's `[case]`. Zero gives the dry bearing.
     #[arg(long, value_parser = non_negative)]
     pub speed_rpm: Option<f64>,
@@ -235,7 +237,7 @@ pub fn run(args: StaticArgs) -> anyhow::Result<()> {
     let text = std::fs::read_to_string(&args.config)
         .with_context(|| format!("{}: cannot read", args.config.display()))?;
     if bearing_host_common::ball_config::is_ball_config(&text) {
-        return super::statics_ball::run(&args);
+        return ball::run(&args);
     }
     args.ball.refuse_for_rollers()?;
     let (config, params) = BearingConfig::load(&args.config)?;

@@ -4,7 +4,7 @@
 //! M_PER_S --radius M --modulus PA --alpha PER_PA --eta0 PA_S`, the flags of `bearing film`) or
 //! by dimensionless groups (`--w --u --g`, or Moes `--m --l`); `bearing ehl convergence` prints
 //! the N / 2N / 4N grid-refinement table with the Richardson extrapolation; `bearing ehl
-//! compare` runs the formula comparisons ([`super::ehl_compare`]).
+//! compare` runs the formula comparisons ([`compare`]).
 
 use anyhow::{bail, Context, Result};
 use bearing_ehl::{
@@ -14,7 +14,10 @@ use bearing_host_common::output::OutputFiles;
 use clap::{Args, Subcommand};
 use std::path::PathBuf;
 
+mod compare;
+mod plot;
 mod point;
+mod trust;
 
 #[derive(Args, Debug)]
 pub struct EhlArgs {
@@ -29,7 +32,7 @@ enum EhlCommand {
     /// Grid-refinement table (N, 2N, 4N and Richardson extrapolation) for one case.
     Convergence(ConvergenceArgs),
     /// The solver against Moes' or Pan–Hamrock's formula over a grid of cases (docs/ehl.md).
-    Compare(super::ehl_compare::CompareArgs),
+    Compare(compare::CompareArgs),
 }
 
 /// The case: SI flags, or W/U/G, or Moes M/L.
@@ -269,7 +272,7 @@ pub fn run(args: EhlArgs) -> Result<()> {
     match args.command {
         EhlCommand::Solve(a) => solve(a),
         EhlCommand::Convergence(a) => convergence_table(a),
-        EhlCommand::Compare(a) => super::ehl_compare::run(a),
+        EhlCommand::Compare(a) => compare::run(a),
     }
 }
 
@@ -278,7 +281,7 @@ fn solve(a: SolveArgs) -> Result<()> {
         return point::solve(&a);
     }
     let result = a.case.case().and_then(|c| {
-        super::ehl_trust::solve(&c, &a.case.options(), a.case.flags(), |e| {
+        trust::solve(&c, &a.case.options(), a.case.flags(), |e| {
             name_flags(e, &[], "the case")
         })
     });
@@ -297,7 +300,7 @@ fn solve(a: SolveArgs) -> Result<()> {
         let temp = files
             .stage(path)
             .with_context(|| format!("--plot {}", path.display()))?;
-        super::ehl_plot::plot(&sol, &temp).with_context(|| format!("--plot {}", path.display()))?;
+        plot::plot(&sol, &temp).with_context(|| format!("--plot {}", path.display()))?;
     }
     files.commit()?;
     if a.json {

@@ -13,8 +13,8 @@ use clap::ValueEnum;
 use plotters::prelude::*;
 use serde_json::json;
 
-use super::common::{print_json, rad_per_s};
-use super::friction::FrictionArgs;
+use super::FrictionArgs;
+use crate::commands::common::{print_json, rad_per_s};
 use bearing_host_common::config::BearingConfig;
 use bearing_host_common::friction::{contact_friction, LoadSharing, SharedContact};
 use bearing_host_common::output::write_with;
@@ -83,10 +83,14 @@ pub fn run(
 ) -> anyhow::Result<()> {
     let outer = side == ContactSide::Outer;
     let load = load_n as f32;
-    super::film::check_hertz("--roller-load", &params.contact_input(outer, load, 0.0))?;
+    crate::commands::film::check_hertz("--roller-load", &params.contact_input(outer, load, 0.0))?;
     // The speed as `bearing static` checks it (the contact's load is checked above, not the
     // bearing's radial load).
-    super::statics::check_case(params, (0.0, "--radial-load"), (args.max_rpm, "--max-rpm"))?;
+    crate::commands::statics::check_case(
+        params,
+        (0.0, "--radial-load"),
+        (args.max_rpm, "--max-rpm"),
+    )?;
     let n = usize::from(args.points);
     let points: Vec<Point> = (0..n)
         .map(|k| {

@@ -21,7 +21,7 @@ use bearing_train::ann::train::{Solver, TrainOptions, Trained};
 use bearing_train::dataset::{ContactCase, DatasetContact};
 use clap::{Args, Subcommand};
 
-use super::dataset::ContactKind;
+use crate::commands::dataset::ContactKind;
 
 /// `bearing train …`
 #[derive(Args)]

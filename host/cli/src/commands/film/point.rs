@@ -12,8 +12,8 @@ use bearing_ehl::point::{self, formulas, hertz, PointContactCase, PointSolverOpt
 use bearing_ehl::EhlError;
 use serde_json::json;
 
-use super::common::print_json;
-use super::film::{FilmArgs, MAX_HERTZ_PRESSURE_PA};
+use super::{FilmArgs, MAX_HERTZ_PRESSURE_PA};
+use crate::commands::common::print_json;
 
 /// Range of `--ellipticity` (as `bearing ehl solve --contact point`).
 const ELLIPTICITY_RANGE: (f64, f64) = (1.0, 12.0);
@@ -100,7 +100,7 @@ fn point_case(args: &FilmArgs) -> Result<PointContactCase> {
 
 /// The core's input for a case (every field checked to fit f32 by `single_precision`).
 fn core_input(case: &PointContactCase) -> Result<PointContactInput> {
-    let v = |flag: &str, x: f64| super::film::single_precision(flag, x);
+    let v = |flag: &str, x: f64| super::single_precision(flag, x);
     Ok(PointContactInput {
         load_n: v("--load", case.load_n)?,
         entrainment_speed_m_s: v("--entrainment", case.entrainment_speed_m_s)?,
@@ -113,7 +113,7 @@ fn core_input(case: &PointContactCase) -> Result<PointContactInput> {
 }
 
 /// Stable name of a film source in the JSON.
-pub(super) fn source_name(s: FilmSource) -> &'static str {
+pub(crate) fn source_name(s: FilmSource) -> &'static str {
     match s {
         FilmSource::None => "none",
         FilmSource::Regression => "regression",
@@ -266,13 +266,13 @@ pub fn run_ball(args: &FilmArgs, path: &std::path::Path) -> Result<()> {
         bail!("--roller-load applies to roller-bearing configs: give --ball-load N");
     }
     let rpm = args.speed_rpm.unwrap_or(0.0);
-    if rpm > super::film::max_speed_rpm() {
+    if rpm > super::max_speed_rpm() {
         bail!(
             "--speed-rpm = {rpm:e} is out of range: allowed (0, {:.0}] rpm",
-            super::film::max_speed_rpm()
+            super::max_speed_rpm()
         );
     }
-    let contacts = params.contact_inputs(load as f32, super::common::rad_per_s(rpm));
+    let contacts = params.contact_inputs(load as f32, crate::commands::common::rad_per_s(rpm));
     let mut reports = Vec::new();
     for contact in contacts {
         let case = PointContactCase {

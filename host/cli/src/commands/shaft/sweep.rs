@@ -7,8 +7,10 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use anyhow::{bail, Context, Result};
 use bearing_host_common::output::OutputFiles;
 use bearing_shaft::bearing::{BearingSpec, FilmKind};
+use bearing_shaft::model::RotorModel;
 use bearing_shaft::plots;
-use bearing_shaft::sweep::{hub_motor_speeds_rpm, sweep};
+use bearing_shaft::sweep::{hub_motor_speeds_rpm, sweep, FilmComparison, SweepPoint};
+use std::path::PathBuf;
 
 use super::run::spectrum_orders;
 use super::{check, load, mesh_orders, rpm_to_rad, settings, with_suffix, SweepArgs};
@@ -54,6 +56,33 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
         bar.inc(1);
     })?;
     bar.finish_and_clear();
+    let (waterfalls, power_png) = write_plots(&a, &model, &points, top)?;
+    let mesh = mesh_orders(&model)
+        .into_iter()
+        .fold(None, |m: Option<f64>, o| Some(m.map_or(o, |m| m.max(o))));
+    let comparison = bearing_shaft::sweep::compare_films(&points, top, mesh);
+    if a.model.json {
+        println!("{}", sweep_json(&points, comparison.as_ref()));
+        return Ok(());
+    }
+    print_table(&points, comparison.as_ref(), mesh);
+    println!(
+        "plots: {}, {}, {}",
+        a.plot.display(),
+        waterfalls.join(", "),
+        power_png.display()
+    );
+    Ok(())
+}
+
+/// The envelope, the two waterfalls and the power-loss plot of a sweep, all or none; returns the
+/// waterfalls' paths and the power-loss plot's path.
+fn write_plots(
+    a: &SweepArgs,
+    model: &RotorModel,
+    points: &[SweepPoint],
+    top: f64,
+) -> Result<(Vec<String>, PathBuf)> {
     // The four plots or none: staged under temporary names, renamed at the end.
     let mut files = OutputFiles::new();
     let mut stage = |path: &std::path::Path| {
@@ -61,9 +90,9 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
             .stage(path)
             .with_context(|| format!("writing {}", path.display()))
     };
-    plots::envelopes(&points, &stage(&a.plot)?)
+    plots::envelopes(points, &stage(&a.plot)?)
         .map_err(|e| anyhow::anyhow!("writing {}: {e}", a.plot.display()))?;
-    let orders = spectrum_orders(&model, 1.0)?;
+    let orders = spectrum_orders(model, 1.0)?;
     let top_hz = top / 60.0;
     let f_max = 1.3 * orders.iter().map(|o| o.1).fold(1.0, f64::max) * top_hz;
     let mut waterfalls = Vec::new();
@@ -91,13 +120,14 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
         waterfalls.push(png.display().to_string());
     }
     let power_png = with_suffix(&a.plot.with_extension(""), "_power_loss.png");
-    plots::power_loss(&points, &stage(&power_png)?)
+    plots::power_loss(points, &stage(&power_png)?)
         .map_err(|e| anyhow::anyhow!("writing {}: {e}", power_png.display()))?;
     files.commit()?;
-    let mesh = mesh_orders(&model)
-        .into_iter()
-        .fold(None, |m: Option<f64>, o| Some(m.map_or(o, |m| m.max(o))));
-    let comparison = bearing_shaft::sweep::compare_films(&points, top, mesh);
+    Ok((waterfalls, power_png))
+}
+
+/// The `--json` form of a sweep: each quantity as one array over the speeds, per film.
+fn sweep_json(points: &[SweepPoint], comparison: Option<&FilmComparison>) -> serde_json::Value {
     let split = |lub: bool| {
         let part = |i: usize| {
             points
@@ -124,15 +154,13 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
             "power_loss_split_w": split(lub),
         })
     };
-    if a.model.json {
-        let speeds: Vec<f64> = points.iter().map(|p| p.speed_rpm).collect();
-        println!(
-            "{}",
-            serde_json::json!({"speeds_rpm": speeds, "lubricated": side(true), "dry": side(false),
-                "comparison": comparison})
-        );
-        return Ok(());
-    }
+    let speeds: Vec<f64> = points.iter().map(|p| p.speed_rpm).collect();
+    serde_json::json!({"speeds_rpm": speeds, "lubricated": side(true), "dry": side(false),
+        "comparison": comparison})
+}
+
+/// The text form of a sweep: one row per speed, then the lubricated-versus-dry comparison.
+fn print_table(points: &[SweepPoint], comparison: Option<&FilmComparison>, mesh: Option<f64>) {
     println!(
         "{:>8} {:>13} {:>13} {:>11} {:>11} {:>11} {:>11} {:>9} {:>11} {:>11} {:>9}",
         "rpm",
@@ -156,7 +184,7 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
             .copied()
             .unwrap_or(f64::NAN)
     };
-    for p in &points {
+    for p in points {
         println!(
             "{:>8.0} {:>13.4e} {:>13.4e} {:>11.4} {:>11.4} {:>11.4} {:>11.2} {:>9.2} {:>11.2} {:>11.2} {:>9.1e}",
             p.speed_rpm,
@@ -172,7 +200,7 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
             p.steadiness[0].max(p.steadiness[1])
         );
     }
-    if let Some(c) = &comparison {
+    if let Some(c) = comparison {
         let opt = |v: Option<f64>| v.map_or("none in the sweep".to_string(), |x| format!("{x:.0}"));
         println!("lubricated vs dry at {:.0} rpm:", c.speed_rpm);
         println!(
@@ -203,11 +231,4 @@ pub(super) fn cmd_sweep(a: SweepArgs) -> Result<()> {
         "P: power loss of the roller bearings at the static equilibrium of each speed; dry: the \
          dry bearing's roller loads with the regression film at those loads (docs/shaft.md)"
     );
-    println!(
-        "plots: {}, {}, {}",
-        a.plot.display(),
-        waterfalls.join(", "),
-        power_png.display()
-    );
-    Ok(())
 }

@@ -14,10 +14,14 @@ use bearing_ehl::{self as ehl, ContactCase, EhlError, EhlSolution, SolverOptions
 use clap::Args;
 use serde_json::json;
 
-use super::common::{non_negative, positive, print_json, rad_per_s};
-use super::film_plot::{self, PlotOver};
+mod plot;
+pub(crate) mod point;
+
+use crate::commands::common::{non_negative, positive, print_json, rad_per_s};
+
 use bearing_host_common::config::BearingConfig;
 use bearing_host_common::output::write_with;
+use plot::PlotOver;
 
 /// Film thickness of a line contact from every available film model.
 ///
@@ -25,7 +29,7 @@ use bearing_host_common::output::write_with;
 /// --eta0`, E' as docs/physics.md §1 defines it), or a bearing with `--config FILE --speed-rpm RPM
 /// --roller-load N` (both contacts of the roller are shown). `--contact point` takes a ball–race
 /// point contact instead (`--load --entrainment --radius --radius-y | --ellipticity --modulus
-/// --alpha --eta0`, `film_point`).
+/// --alpha --eta0`, `point`).
 #[derive(Args, Debug)]
 pub struct FilmArgs {
     /// Contact kind: line (roller) or point (ball; give --radius-y or --ellipticity).
@@ -106,7 +110,7 @@ fn refuse_point_flags(args: &FilmArgs) -> anyhow::Result<()> {
 pub enum FilmContact {
     /// Cylindrical roller: line contact.
     Line,
-    /// Ball: circular or elliptical point contact (`film_point`).
+    /// Ball: circular or elliptical point contact (`point`).
     Point,
 }
 
@@ -195,7 +199,7 @@ fn maybe_plot(args: &FilmArgs, contact: &ContactInput, title: &str) -> anyhow::R
             bail!("--plot-span must exceed 1 (got {})", args.plot_span);
         }
         write_with(path, |temp| {
-            film_plot::plot(
+            plot::plot(
                 contact,
                 args.plot_over,
                 usize::from(args.plot_points),
@@ -438,13 +442,13 @@ fn print_corrections(r: &serde_json::Value) {
 /// Run `bearing film`.
 pub fn run(args: FilmArgs) -> anyhow::Result<()> {
     if args.contact == FilmContact::Point {
-        return super::film_point::run(&args);
+        return point::run(&args);
     }
     if let Some(path) = &args.config {
         let text = std::fs::read_to_string(path)
             .with_context(|| format!("{}: cannot read", path.display()))?;
         if bearing_host_common::ball_config::is_ball_config(&text) {
-            return super::film_point::run_ball(&args, path);
+            return point::run_ball(&args, path);
         }
         if args.ball_load.is_some() {
             bail!("--ball-load applies to ball-bearing configs: give --roller-load N");

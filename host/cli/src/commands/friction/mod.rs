@@ -2,7 +2,7 @@
 //! and its split into rolling, viscous and boundary parts against shaft speed, with the film
 //! ratio λ of the most loaded contact — beside Palmgren's empirical torque and the torque with
 //! the film re-solved for the load the asperities leave it (docs/friction.md, docs/physics.md
-//! §8); with `--contact`, the same for one contact ([`super::friction_contact`]).
+//! §8); with `--contact`, the same for one contact ([`contact`]).
 
 use std::path::{Path, PathBuf};
 
@@ -12,8 +12,10 @@ use clap::Args;
 use plotters::prelude::*;
 use serde_json::json;
 
-use super::common::{non_negative, positive, print_json, rad_per_s};
-use super::statics::solve;
+mod contact;
+
+use crate::commands::common::{non_negative, positive, print_json, rad_per_s};
+use crate::commands::statics::solve;
 use bearing_host_common::config::BearingConfig;
 use bearing_host_common::friction::{bearing_friction_at_loads, LoadSharing};
 use bearing_host_common::output::write_with;
@@ -34,7 +36,7 @@ pub struct FrictionArgs {
     pub radial_load: Option<f64>,
     /// One contact of a roller instead of the bearing: its friction coefficient against speed.
     #[arg(long, value_enum, requires = "roller_load")]
-    pub contact: Option<super::friction_contact::ContactSide>,
+    pub contact: Option<contact::ContactSide>,
     /// The contact's load Q (N), with --contact.
     #[arg(long, value_parser = positive, requires = "contact")]
     pub roller_load: Option<f64>,
@@ -116,16 +118,20 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
         );
     }
     if let (Some(side), Some(load)) = (args.contact, args.roller_load) {
-        return super::friction_contact::run(&args, &config, &params, side, load);
+        return contact::run(&args, &config, &params, side, load);
     }
-    let load = super::statics::radial_load_n(args.radial_load, &config)?;
-    let load_source = super::statics::value_source(
+    let load = crate::commands::statics::radial_load_n(args.radial_load, &config)?;
+    let load_source = crate::commands::statics::value_source(
         args.radial_load.is_some(),
         "--radial-load",
         &args.config,
         "radial_load_n",
     );
-    super::statics::check_case(&params, (load, &load_source), (args.max_rpm, "--max-rpm"))?;
+    crate::commands::statics::check_case(
+        &params,
+        (load, &load_source),
+        (args.max_rpm, "--max-rpm"),
+    )?;
     let nu_mm2_s = f64::from(params.lubricant().viscosity_pa_s())
         / f64::from(params.lubricant().density_kg_m3())
         * 1e6;
@@ -185,13 +191,6 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
         write_with(path, |temp| plot(&points, &config.name, load, temp))
             .with_context(|| format!("drawing {}", path.display()))?;
     }
-    let share = |p: &Point, i: usize| {
-        if p.power_w > 0.0 {
-            p.split_w[i] / p.power_w
-        } else {
-            0.0
-        }
-    };
     if args.json {
         let value = json!({
             "bearing": config.name,
@@ -216,10 +215,34 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
         });
         return print_json(&value);
     }
+    print_table(
+        &args,
+        &config.name,
+        load,
+        params.friction().slide_to_roll_ratio(),
+        &points,
+    );
+    Ok(())
+}
+
+/// The text form of `bearing friction`: one row per speed.
+fn print_table(
+    args: &FrictionArgs,
+    name: &str,
+    load: f64,
+    slide_to_roll_ratio: f32,
+    points: &[Point],
+) {
+    let share = |p: &Point, i: usize| {
+        if p.power_w > 0.0 {
+            p.split_w[i] / p.power_w
+        } else {
+            0.0
+        }
+    };
     println!(
         "{} — {load:.0} N radial, slide/roll {} (friction model: docs/physics.md §8)",
-        config.name,
-        params.friction().slide_to_roll_ratio()
+        name, slide_to_roll_ratio
     );
     println!(
         "{:>9} {:>11} {:>10} {:>8} {:>8} {:>8} {:>7} {:>10} {:>12} {:>11}",
@@ -234,7 +257,7 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
         "Palmgren N·m",
         "re-solved %"
     );
-    for p in &points {
+    for p in points {
         println!(
             "{:>9.0} {:>11.5} {:>10.3} {:>8.1} {:>8.1} {:>8.1} {:>7.2} {:>10} {:>12.5} {:>+11.2}",
             p.speed_rpm,
@@ -256,7 +279,6 @@ pub fn run(args: FrictionArgs) -> anyhow::Result<()> {
     if let Some(path) = &args.plot {
         println!("plot: {}", path.display());
     }
-    Ok(())
 }
 
 fn sharing_json(s: &SharingPoint) -> serde_json::Value {

@@ -2,7 +2,7 @@
 //! cases, one row per case (the tables of docs/ehl.md), with the grid-and-domain check of every
 //! case outside the formula's bound ([`bearing_ehl::compare`]).
 
-use super::common::positive;
+use crate::commands::common::positive;
 use anyhow::{anyhow, Result};
 use bearing_ehl::compare::{self, Comparer, Comparison, Formula};
 use bearing_ehl::ContactCase;
@@ -123,7 +123,7 @@ pub fn run(a: CompareArgs) -> Result<()> {
             "min_within": summary.min_within,
             "outside_and_converged": summary.outside_and_converged,
         });
-        super::common::print_json(&v)?;
+        crate::commands::common::print_json(&v)?;
     } else {
         print_table(formula, &rows, &summary);
     }
