@@ -39,7 +39,10 @@ mod tests;
 
 pub use case::PointContactCase;
 pub use hertz::HertzEllipse;
-pub use solver::{solve_point, PointSolverOptions, DEFAULT_POINT_NODES, HERTZ_LOAD};
+pub use solver::{
+    grid_for_case, solve_point, PointSolverOptions, DEFAULT_MAX_GRID_ERROR, DEFAULT_POINT_NODES,
+    HERTZ_LOAD,
+};
 
 use level::Level;
 use solver::LevelReport;
