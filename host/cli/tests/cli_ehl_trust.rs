@@ -70,3 +70,36 @@ fn coarse_grids_are_refused_and_results_carry_their_grid_error() {
     );
     assert_eq!(e["other_nodes"], 201);
 }
+
+/// Point contacts: a grid that does not resolve the film is refused naming the estimate and the
+/// flags of a finer grid; without --nodes the grid is chosen from the case and the answer
+/// carries an estimate within the 2 % bound.
+#[test]
+fn point_grids_too_coarse_are_refused_naming_the_estimate() {
+    let (ok, v, err) = solve(&[
+        "--contact",
+        "point",
+        "--m",
+        "1000",
+        "--l",
+        "6",
+        "--nodes",
+        "65",
+    ]);
+    assert!(!ok && v["converged"] == false, "{v}");
+    assert!(
+        err.contains("65 × 65 grid does not resolve")
+            && err.contains("estimated grid error h_c")
+            && err.contains("--rolling-nodes 129")
+            && err.contains("--nodes 129"),
+        "{err}"
+    );
+    let (ok, v, err) = solve(&["--contact", "point", "--m", "20", "--l", "10"]);
+    assert!(ok && v["converged"] == true, "{err}");
+    assert_eq!(v["nodes"], 129 * 129);
+    let e = &v["grid_error_estimate"];
+    for film in ["central_film", "min_film"] {
+        let estimate = e[film].as_f64().unwrap();
+        assert!(estimate > 0.0 && estimate <= 0.02, "{e}");
+    }
+}

@@ -98,6 +98,22 @@ pub enum EhlError {
         load_error: f64,
         reynolds_residual: f64,
     },
+    /// The grid does not resolve the film: the estimated relative grid error of the raw h_c or
+    /// h_min (fractions; infinite where the solve has a single level) exceeds `limit`.
+    #[error(
+        "the {nodes_x} × {nodes_y} grid does not resolve the film: estimated grid error h_c \
+         {:.1} %, h_min {:.1} % above the {:.1} % bound",
+        100.0 * central,
+        100.0 * min,
+        100.0 * limit
+    )]
+    GridTooCoarse {
+        central: f64,
+        min: f64,
+        limit: f64,
+        nodes_x: usize,
+        nodes_y: usize,
+    },
 }
 
 /// Solver options. `Default` is the accuracy-reference setting: Roelands, Dowson–Higginson,

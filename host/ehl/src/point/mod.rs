@@ -19,12 +19,17 @@
 //! matrix-free (its deflection part by FFT) and preconditioned by the sparse LU (faer) of the
 //! semi-system Jacobian, which keeps the deflection coupling within ±2 × ±1 nodes; the step is
 //! relaxed only where the correction grows. h_c and h_min are reported Richardson-extrapolated
-//! from the two finest levels (raw values kept). Cost and accuracy are measured in
-//! docs/point_contact.md.
+//! from the two finest levels (raw values kept). At default settings the finest grid is chosen
+//! from the case (`solver::grid_for_case`, 129² to 513 × 257 by M/k) and a result whose
+//! estimated raw grid error exceeds 2 % is refused (`EhlError::GridTooCoarse`). Cost and
+//! accuracy are measured in docs/point_contact.md.
 //!
-//! Why not Venner–Lubrecht multigrid: the Newton–Krylov route reuses the line contact's faer
-//! LU and active-set approach and meets the speed target at 129² nodes (docs/point_contact.md);
-//! multigrid was not tried.
+//! Why not Venner–Lubrecht multigrid (yet): the Newton–Krylov route reuses the line contact's
+//! faer LU and active-set approach; on fine grids the numeric LU of the preconditioner is most
+//! of the time (≈ 60 % of the profile samples of a 513² solve, which peaks at 2.3 GB), so
+//! multilevel multi-integration with an FAS line-relaxation solve (Venner & Lubrecht, 2000) is
+//! the known way to the fine grids' cost; it is not implemented. Reusing one LU over several
+//! Newton steps was measured and rejected (docs/point_contact.md).
 
 pub mod case;
 pub mod deflection;
@@ -39,7 +44,10 @@ mod tests;
 
 pub use case::PointContactCase;
 pub use hertz::HertzEllipse;
-pub use solver::{solve_point, PointSolverOptions, DEFAULT_POINT_NODES, HERTZ_LOAD};
+pub use solver::{
+    grid_for_case, solve_point, PointSolverOptions, DEFAULT_MAX_GRID_ERROR, DEFAULT_POINT_NODES,
+    HERTZ_LOAD,
+};
 
 use level::Level;
 use solver::LevelReport;

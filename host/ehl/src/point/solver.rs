@@ -59,10 +59,56 @@ pub struct PointSolverOptions {
     pub load_tolerance: f64,
     /// Report h_c and h_min Richardson-extrapolated from the two finest levels.
     pub richardson: bool,
+    /// Choose the finest grid from the case ([`grid_for_case`]) instead of `nodes` and
+    /// `rolling_nodes` (which are then not used).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub grid_from_case: bool,
+    /// Refuse ([`EhlError::GridTooCoarse`]) a solution whose estimated grid error of the raw
+    /// h_c or h_min exceeds this fraction, or that has no estimate; None accepts every grid.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_grid_error: Option<f64>,
 }
 
-/// Default nodes per direction.
+/// Default nodes per direction (the coarsest grid [`grid_for_case`] chooses).
 pub const DEFAULT_POINT_NODES: usize = 129;
+
+/// Default bound on the estimated grid error of the raw films (fraction): the Richardson value
+/// reported is then within it of the grid-converged film (docs/point_contact.md).
+pub const DEFAULT_MAX_GRID_ERROR: f64 = 0.02;
+
+/// Estimated grid error of the raw films on the 129² grid per unit M/k, %: measured over the
+/// table of docs/point_contact.md (h_c 0.031–0.040 % per unit M/k at k = 1–8, M = 20–2000; h_min
+/// up to 1.3 times h_c at k ≤ 3 and 1.2 times at k = 8), the larger of the two.
+const ERROR_PER_M_OVER_K_129: f64 = 0.045;
+
+/// Predicted grid error (%) the grid of [`grid_for_case`] must meet: 1.5 %, a quarter below the
+/// default bound for the scatter of the prediction (L = 4–15 moves it by ±20 % at k = 8).
+const PREDICTED_ERROR_TARGET: f64 = 1.5;
+
+/// Ellipticity from which 129 nodes across resolve the film (docs/point_contact.md: at k = 5.8
+/// and 8 the 257² films equal the 257 × 129 ones; below, h_min's side lobes need Y nodes too).
+const FINE_ACROSS_ELLIPTICITY: f64 = 5.8;
+
+/// The finest grid (nodes along X, across) for a case of Moes' `m` and ellipticity `k`: the
+/// fewest nodes along X of 129, 257, 513 whose predicted raw grid error
+/// ERROR_PER_M_OVER_K_129 · (M/k) · (128/(n_x − 1))² % (second order) is within 1.5 %; as many
+/// across below k = 5.8 (at most 257: 513² needs 2.2 GB), 129 across from it. So M/k ≤ 33 gives
+/// 129², M/k ≤ 133 gives 257² (257 × 129 from k = 5.8), above it 513 × 257 (513 × 129).
+pub fn grid_for_case(m: f64, k: f64) -> (usize, usize) {
+    let predicted_129 = ERROR_PER_M_OVER_K_129 * m / k;
+    let mut nx = DEFAULT_POINT_NODES;
+    let mut predicted = predicted_129;
+    while predicted > PREDICTED_ERROR_TARGET && nx < 513 {
+        nx = 2 * (nx - 1) + 1;
+        predicted /= 4.0;
+    }
+    let ny = if k >= FINE_ACROSS_ELLIPTICITY {
+        DEFAULT_POINT_NODES
+    } else {
+        nx.min(257)
+    };
+    (nx, ny)
+}
 
 impl Default for PointSolverOptions {
     fn default() -> Self {
@@ -79,6 +125,8 @@ impl Default for PointSolverOptions {
             pressure_tolerance: 1e-4,
             load_tolerance: 1e-4,
             richardson: true,
+            grid_from_case: true,
+            max_grid_error: Some(DEFAULT_MAX_GRID_ERROR),
         }
     }
 }
@@ -123,6 +171,11 @@ impl PointSolverOptions {
         if !(self.y_half.is_finite() && (1.5..=20.0).contains(&self.y_half)) {
             return bad("y_half", "must be finite, in [1.5, 20]");
         }
+        if let Some(e) = self.max_grid_error {
+            if !(e.is_finite() && e > 0.0 && e < 1.0) {
+                return bad("max_grid_error", "must be finite, in (0, 1)");
+            }
+        }
         crate::check_iteration(
             self.max_iterations,
             self.pressure_tolerance,
@@ -166,7 +219,12 @@ pub fn solve_point(
     };
     let film_scale = b * b / rx;
     let deflection_scale = 2.0 * ph * rx / (PI * case.reduced_modulus_pa * b);
-    let counts = level_sizes(opts.rolling_nodes.unwrap_or(opts.nodes), opts.nodes);
+    let (nx, ny) = if opts.grid_from_case {
+        grid_for_case(case.moes_m(), k)
+    } else {
+        (opts.rolling_nodes.unwrap_or(opts.nodes), opts.nodes)
+    };
+    let counts = level_sizes(nx, ny);
     let domain = (opts.x_start, opts.x_end, opts.y_half);
     let mut previous: Option<Level> = None;
     let mut films: Vec<(f64, f64)> = Vec::new();
@@ -188,7 +246,7 @@ pub fn solve_point(
         (Some(l), Some(r)) => (l, r),
         _ => unreachable!("at least one level"),
     };
-    Ok(PointSolution::new(
+    let solution = PointSolution::new(
         case,
         opts,
         &level,
@@ -197,7 +255,22 @@ pub fn solve_point(
         report,
         film_scale,
         start.elapsed().as_secs_f64(),
-    ))
+    );
+    if let Some(limit) = opts.max_grid_error {
+        let (central, min) = solution
+            .grid_error_estimate
+            .unwrap_or((f64::INFINITY, f64::INFINITY));
+        if !(central <= limit && min <= limit) {
+            return Err(EhlError::GridTooCoarse {
+                central,
+                min,
+                limit,
+                nodes_x: level.nx,
+                nodes_y: level.ny,
+            });
+        }
+    }
+    Ok(solution)
 }
 
 /// Grid sizes (nodes along X, across), coarsest first: the finest (nx, ny) and the grids

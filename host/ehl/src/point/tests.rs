@@ -4,11 +4,20 @@
 
 use super::*;
 
-fn coarse(nodes: usize) -> PointSolverOptions {
+/// A fixed grid of `nodes` per direction, every grid accepted.
+fn fixed(nodes: usize) -> PointSolverOptions {
     PointSolverOptions {
         nodes,
-        richardson: false,
+        grid_from_case: false,
+        max_grid_error: None,
         ..Default::default()
+    }
+}
+
+fn coarse(nodes: usize) -> PointSolverOptions {
+    PointSolverOptions {
+        richardson: false,
+        ..fixed(nodes)
     }
 }
 
@@ -68,9 +77,8 @@ fn central_film_converges_along_the_rolling_direction() {
     let case = PointContactCase::from_moes(1000.0, 10.0, 8.0).unwrap();
     let solve = |rolling: usize| {
         let opts = PointSolverOptions {
-            nodes: 65,
             rolling_nodes: Some(rolling),
-            ..Default::default()
+            ..fixed(65)
         };
         solve_point(&case, &opts).unwrap()
     };
@@ -115,11 +123,10 @@ fn rigid_isoviscous_film_meets_brewe_hamrock_taylor() {
                 viscosity: crate::rheology::ViscosityLaw::Isoviscous,
                 compressible: false,
                 elastic: false,
-                nodes,
                 x_start: -4.5 * scale,
                 x_end: 1.5 * scale,
                 y_half: 3.0 * scale,
-                ..Default::default()
+                ..fixed(nodes)
             };
             let s = solve_point(&case, &opts).unwrap();
             assert!(s.richardson);
@@ -190,7 +197,7 @@ fn point_contact_benchmark() {
             for l in [6.0, 12.0] {
                 let case = PointContactCase::from_moes(m, l, k).unwrap();
                 let cpu_start = thread_cpu_s();
-                let s = solve_point(&case, &PointSolverOptions::default()).unwrap();
+                let s = solve_point(&case, &fixed(129)).unwrap();
                 let cpu = cpu_start.zip(thread_cpu_s()).map(|(a, b)| b - a);
                 let (ec, em) = s.grid_error_estimate.unwrap();
                 let ratio = |f: f64, g: f64| format!("{:+.1} %", 100.0 * (f / g - 1.0));
@@ -245,9 +252,8 @@ fn point_contact_benchmark() {
 /// grid error (%), iterations, CPU and wall time, as a row of docs/point_contact.md's tables.
 fn study_row(case: &PointContactCase, nodes: usize, rolling: Option<usize>) {
     let opts = PointSolverOptions {
-        nodes,
         rolling_nodes: rolling,
-        ..Default::default()
+        ..fixed(nodes)
     };
     let cpu_start = thread_cpu_s();
     let s = solve_point(case, &opts).unwrap();
@@ -290,6 +296,169 @@ fn point_refinement_study() {
             let mut parts = g.split('x').map(|x| x.parse::<usize>().unwrap());
             let nodes = parts.next().unwrap();
             study_row(&case, nodes, parts.next());
+        }
+    }
+}
+
+/// The grid one step finer than `(nx, ny)` for the accuracy check of the default grid: both
+/// directions halved on 129², X alone otherwise (the reference's Richardson value then
+/// carries the X spacing, the one the grid choice refines; a 513² reference takes minutes and
+/// 2.3 GB).
+fn finer_grid((nx, ny): (usize, usize)) -> PointSolverOptions {
+    let across = if nx == ny && nx < 257 { 2 * ny - 1 } else { ny };
+    PointSolverOptions {
+        rolling_nodes: Some(2 * nx - 1),
+        ..fixed(across)
+    }
+}
+
+/// Relative differences (h_c, h_min) of the default solve of `case` from the Richardson
+/// values of the next finer grid, and the default solution (or its refusal).
+fn default_against_finer(
+    case: &PointContactCase,
+) -> (
+    Result<PointSolution, crate::EhlError>,
+    PointSolution,
+    f64,
+    f64,
+) {
+    let answer = solve_point(case, &PointSolverOptions::default());
+    let grid = grid_for_case(case.moes_m(), case.hertz().ellipticity);
+    let reference = solve_point(case, &finer_grid(grid)).unwrap();
+    let (dc, dm) = match &answer {
+        Ok(s) => (
+            s.central_film_m / reference.central_film_m - 1.0,
+            s.min_film_m / reference.min_film_m - 1.0,
+        ),
+        Err(_) => (f64::NAN, f64::NAN),
+    };
+    (answer, reference, dc, dm)
+}
+
+/// At default settings the answer is within 2 % of the grid-converged film, estimated by the
+/// Richardson values of the solver's own next finer grid: a circular contact at M = 20 and an
+/// elliptical one at k = 8, M = 200 (both M/k ≤ 33: 129², reference 257²).
+#[test]
+fn default_grid_answers_within_two_percent() {
+    for (m, l, k) in [(20.0, 10.0, 1.0), (200.0, 10.0, 8.0)] {
+        let case = PointContactCase::from_moes(m, l, k).unwrap();
+        let (answer, reference, dc, dm) = default_against_finer(&case);
+        let s = answer.unwrap();
+        let (ec, em) = s.grid_error_estimate.unwrap();
+        println!(
+            "M = {m}, L = {l}, k = {k}: {} × {} nodes, estimate {:.2} / {:.2} %, against {} × {}: \
+             h_c {:+.2} %, h_min {:+.2} %",
+            s.maps.x.len(),
+            s.maps.y.len(),
+            100.0 * ec,
+            100.0 * em,
+            reference.maps.x.len(),
+            reference.maps.y.len(),
+            100.0 * dc,
+            100.0 * dm
+        );
+        assert!(ec <= DEFAULT_MAX_GRID_ERROR && em <= DEFAULT_MAX_GRID_ERROR);
+        assert!(dc.abs() < 0.02 && dm.abs() < 0.02, "{dc} {dm}");
+    }
+}
+
+/// A grid that does not resolve the film is refused, naming the estimate: M = 1000, circular,
+/// on 65² (the 129² estimate alone is 58 % for h_c, docs/point_contact.md).
+#[test]
+fn unresolved_grid_is_refused_with_its_estimate() {
+    let case = PointContactCase::from_moes(1000.0, 6.0, 1.0).unwrap();
+    let opts = PointSolverOptions {
+        max_grid_error: Some(DEFAULT_MAX_GRID_ERROR),
+        ..fixed(65)
+    };
+    match solve_point(&case, &opts) {
+        Err(crate::EhlError::GridTooCoarse {
+            central,
+            min,
+            limit,
+            nodes_x: 65,
+            nodes_y: 65,
+        }) => {
+            println!("refused: h_c {central:.3}, h_min {min:.3}");
+            assert!(central.max(min) > limit && limit == DEFAULT_MAX_GRID_ERROR);
+        }
+        other => panic!("expected a refusal, got {other:?}"),
+    }
+    // The grid chosen from the case is the finest the rule allows for this M/k.
+    assert_eq!(grid_for_case(1000.0, 1.0), (513, 257));
+    assert_eq!(grid_for_case(20.0, 1.0), (129, 129));
+    assert_eq!(grid_for_case(1000.0, 8.0), (257, 129));
+    assert_eq!(grid_for_case(2000.0, 8.0), (513, 129));
+}
+
+/// The default settings on the check cases of docs/point_contact.md and on random contacts
+/// over k 1–10, M 20–2000 (log-uniform), L 3–25, each against the Richardson values of the
+/// next finer grid; prints the table of docs/point_contact.md (`POINT_CHECKS=0` leaves the
+/// check cases out). Ignored (minutes per high-M case): `POINT_RANDOM=8 cargo test --release
+/// -p bearing-ehl default_grid_table -- --ignored --nocapture --test-threads=1`.
+#[test]
+#[ignore]
+fn default_grid_table() {
+    let checks = std::env::var("POINT_CHECKS").map_or(true, |v| v != "0");
+    let mut cases = vec![
+        (
+            "check, circular",
+            PointContactCase::new(40.0, 10.0, 0.006, 0.006, 2.26e11, 2e-8, 0.02).unwrap(),
+        ),
+        (
+            "check, elliptical",
+            PointContactCase::new(200.0, 5.0, 0.004, 0.06, 2.26e11, 2e-8, 0.01).unwrap(),
+        ),
+    ];
+    if !checks {
+        cases.clear();
+    }
+    let count: usize = std::env::var("POINT_RANDOM")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(8);
+    // xorshift64*, fixed seed: the same contacts every run.
+    let mut state = 0x9E37_79B9_7F4A_7C15u64;
+    let mut uniform = || {
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        (state.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..count {
+        let k = 1.0 + 9.0 * uniform();
+        let m = 20.0 * 100f64.powf(uniform());
+        let l = 3.0 + 22.0 * uniform();
+        cases.push(("random", PointContactCase::from_moes(m, l, k).unwrap()));
+    }
+    println!("| case | M | L | k | nodes X × Y | h_c µm | h_min µm | estimate h_c / h_min % | reference nodes | Δh_c % | Δh_min % | wall s |");
+    println!("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+    for (name, case) in &cases {
+        let (answer, reference, dc, dm) = default_against_finer(case);
+        let k = case.hertz().ellipticity;
+        let (nx, ny) = grid_for_case(case.moes_m(), k);
+        let head = format!(
+            "| {name} | {:.0} | {:.1} | {k:.2} | {nx} × {ny} |",
+            case.moes_m(),
+            case.moes_l()
+        );
+        let refgrid = format!("{} × {}", reference.maps.x.len(), reference.maps.y.len());
+        match answer {
+            Ok(s) => {
+                let (ec, em) = s.grid_error_estimate.unwrap();
+                println!(
+                    "{head} {:.4} | {:.4} | {:.2} / {:.2} | {refgrid} | {:+.2} | {:+.2} | {:.1} |",
+                    s.central_film_m * 1e6,
+                    s.min_film_m * 1e6,
+                    100.0 * ec,
+                    100.0 * em,
+                    100.0 * dc,
+                    100.0 * dm,
+                    s.wall_time_s
+                );
+                assert!(dc.abs() < 0.02 && dm.abs() < 0.02, "{dc} {dm}");
+            }
+            Err(e) => println!("{head} refused: {e} | | | {refgrid} | | | |"),
         }
     }
 }

@@ -115,6 +115,8 @@ mod tests {
         let case = PointContactCase::from_moes(20.0, 6.0, 3.0).unwrap();
         let options = PointSolverOptions {
             nodes: 65,
+            grid_from_case: false,
+            max_grid_error: None,
             ..PointSolverOptions::default()
         };
         let films = solve(&case, &options).unwrap();
@@ -138,7 +140,11 @@ mod tests {
         let domain = crate::dataset::point_domain::PointDomain::default();
         let plan = crate::dataset::generate::plan(40, 1, &domain);
         let start = std::time::Instant::now();
-        let options = PointSolverOptions::default();
+        let options = PointSolverOptions {
+            grid_from_case: false,
+            max_grid_error: None,
+            ..PointSolverOptions::default()
+        };
         let results: Vec<_> = plan
             .cases
             .par_iter()

@@ -146,8 +146,12 @@ fn generate_point(args: GenerateArgs) -> Result<()> {
             args.nodes
         );
     }
+    // The dataset's own grid rule and refusal (`point_numerical`), as the committed file was
+    // generated.
     let solver_options = PointSolverOptions {
         nodes: args.nodes,
+        grid_from_case: false,
+        max_grid_error: None,
         ..PointSolverOptions::default()
     };
     let options = GenerateOptions {

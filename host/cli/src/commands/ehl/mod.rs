@@ -81,7 +81,8 @@ struct CaseArgs {
     #[arg(long)]
     incompressible: bool,
     /// Number of grid nodes (line: 41..=8193, default 801; point: nodes per direction,
-    /// 2^n + 1 in 17..=513, default 129).
+    /// 2^n + 1 in 17..=513; without it and --rolling-nodes the grid is chosen from the case,
+    /// 129² to 513 × 257, and a result whose estimated grid error exceeds 2 % is refused).
     #[arg(long)]
     nodes: Option<usize>,
     /// Point contact: nodes along the rolling direction X (2^n + 1, from --nodes to
@@ -261,7 +262,9 @@ fn name_flags(error: EhlError, direct: &[&str], given: &str) -> anyhow::Error {
             None => anyhow::anyhow!("{error}"),
         },
         // Names a derived quantity (h_c/R, …); the caller adds the flags that set the case.
-        EhlError::OutsideModel { .. } | EhlError::NotConverged { .. } => {
+        EhlError::OutsideModel { .. }
+        | EhlError::NotConverged { .. }
+        | EhlError::GridTooCoarse { .. } => {
             anyhow::anyhow!("{error}")
         }
     }

@@ -104,8 +104,53 @@ fn options(c: &CaseArgs) -> PointSolverOptions {
         compressible: !c.incompressible,
         nodes: c.nodes.unwrap_or(point::DEFAULT_POINT_NODES),
         rolling_nodes: c.rolling_nodes,
+        // Without --nodes and --rolling-nodes the solver chooses the grid from the case; either
+        // way a result whose estimated grid error exceeds the default bound is refused.
+        grid_from_case: c.nodes.is_none() && c.rolling_nodes.is_none(),
+        max_grid_error: Some(point::DEFAULT_MAX_GRID_ERROR),
         ..Default::default()
     }
+}
+
+/// The refusal of a grid that does not resolve the film, naming the estimate and the flags
+/// that give a finer grid (X alone up to 4 (nodes − 1) + 1, both directions up to 513).
+fn grid_refusal(error: &EhlError) -> Option<anyhow::Error> {
+    let EhlError::GridTooCoarse {
+        central,
+        min,
+        limit,
+        nodes_x,
+        nodes_y,
+    } = *error
+    else {
+        return None;
+    };
+    let mut remedies = Vec::new();
+    let along = 2 * nodes_x - 1;
+    if along <= 1025 && along - 1 <= 4 * (nodes_y - 1) {
+        remedies.push(format!(
+            "--nodes {nodes_y} --rolling-nodes {along} (finer along X)"
+        ));
+    }
+    if nodes_y < 513 {
+        let across = 2 * nodes_y - 1;
+        remedies.push(format!(
+            "--nodes {across} --rolling-nodes {} (finer in both directions)",
+            along.max(across).min(4 * (across - 1) + 1).min(1025)
+        ));
+    }
+    let remedy = if remedies.is_empty() {
+        "no finer grid is available (--nodes at most 513, --rolling-nodes at most 1025)".into()
+    } else {
+        format!("try {}", remedies.join(" or "))
+    };
+    Some(anyhow!(
+        "the {nodes_x} × {nodes_y} grid does not resolve this film: estimated grid error h_c \
+         {:.1} %, h_min {:.1} %, allowed ≤ {:.0} %; {remedy}",
+        100.0 * central,
+        100.0 * min,
+        100.0 * limit
+    ))
 }
 
 /// Runs `bearing ehl solve --contact point …`.
@@ -116,6 +161,7 @@ pub(super) fn solve(a: &SolveArgs) -> Result<()> {
     let result = point_case(&a.case).and_then(|case| {
         point::solve_point(&case, &options(&a.case)).map_err(|e| match e {
             EhlError::InvalidOption { .. } => name_point_flags(e),
+            EhlError::GridTooCoarse { .. } => grid_refusal(&e).unwrap_or_else(|| anyhow!("{e}")),
             other => anyhow!("{other}; the case is set by {}", a.case.flags()),
         })
     });
