@@ -75,10 +75,11 @@ pub mod math;
 pub mod params;
 
 pub use bearing::{
-    Bearing, BearingOutput, BearingParams, DynBearing, FilmKind, OutputView, RollerOutput,
+    Bearing, BearingDesign, BearingOutput, BearingParams, DynBearing, FilmKind, OutputView,
+    RollerOutput,
 };
 pub use contact::ContactLaw;
 pub use error::{Allowed, ParamError};
 pub use film::{ContactInput, Film, FilmModel, FilmSource, Regime, Regression};
 pub use friction::{FrictionDesign, FrictionParams, Lubrication};
-pub use params::{BearingDesign, BearingGeometry, Crown, Lubricant, Material, OperatingState};
+pub use params::{BearingGeometry, Crown, Lubricant, Material, OperatingState};

@@ -95,7 +95,7 @@ impl Film {
 /// solver of docs/physics.md §5.2 would give it: elastic–piezoviscous where the contact is loaded,
 /// tending to Martin's rigid iso-viscous film (h₀/R = 4.896U/W) as the load vanishes. The bearing's
 /// film–load coupling relies on that rise at light load for a continuous separation of the
-/// rollers (`bearing::coupling`); a model of the EHL regime alone blends itself with Martin's
+/// rollers (`bearing::roller::coupling`); a model of the EHL regime alone blends itself with Martin's
 /// film, as [`Regression`] does. (The point-contact models of [`point`] serve the EHL regime
 /// of Hamrock–Dowson's formulas and their network's training domain; no bearing step relies on
 /// their light-load limit yet.)

@@ -3,7 +3,7 @@
 
 use super::asperity::{f2, f5_2, LAMBDA_MAX};
 use super::*;
-use crate::params::BearingDesign;
+use crate::bearing::BearingDesign;
 
 /// F_n(λ) = ∫_λ^∞ (s − λ)ⁿ φ(s) ds by Simpson's rule in f64 on s − λ ∈ [0, 14].
 fn gaussian_integral(n: f64, lambda: f64) -> f64 {

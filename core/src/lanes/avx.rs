@@ -186,7 +186,7 @@ pub(super) fn round_with_pow2(a: F32x8) -> (F32x8, F32x8) {
     // `math::round_with_pow2` lane by lane: the same float sum and the same integer
     // arithmetic on its bit pattern (wrapping, as there).
     unsafe {
-        let rounder = _mm256_set1_ps(crate::math::ROUNDER);
+        let rounder = _mm256_set1_ps(super::ROUNDER);
         let shifted = _mm256_add_ps(a.0, rounder);
         let n = _mm256_sub_ps(shifted, rounder);
         let biased = _mm256_add_epi32(

@@ -5,7 +5,8 @@
 //! film–load Newton iterations: two exponentials, two roots, three divisions each). A
 //! superscalar host cannot overlap enough of those chains across rollers to hide their
 //! latency, but it can run four or eight of them in the lanes of one SIMD register. [`Real`] is
-//! what such a stage is written against: `f32` (one roller; the Cortex-M4 path), [`F32x4`]
+//! what such a stage is written against: `f32` (one roller; the Cortex-M4 path; its
+//! implementation is the one-number arithmetic of `crate::math`), [`F32x4`]
 //! (four rollers; SSE on x86-64, a plain lane loop elsewhere) and, in builds with AVX2,
 //! `F32x8` (eight rollers in a 256-bit register) implement it with the same IEEE operations —
 //! `+ − × ÷`, square root, compare-and-select, and integer arithmetic on the bit pattern — so
@@ -84,116 +85,14 @@ pub(crate) trait Real:
     fn gather<U>(items: &[U], f: impl Fn(&U) -> f32) -> Self;
 }
 
-impl Real for f32 {
-    const LANES: usize = 1;
-    type Mask = bool;
-    type PerLane<U: Copy + Default + core::fmt::Debug> = U;
-    #[inline(always)]
-    fn splat(v: f32) -> Self {
-        v
-    }
-    #[inline(always)]
-    fn gt(self, other: Self) -> bool {
-        self > other
-    }
-    #[inline(always)]
-    fn ge(self, other: Self) -> bool {
-        self >= other
-    }
-    #[inline(always)]
-    fn le(self, other: Self) -> bool {
-        self <= other
-    }
-    #[inline(always)]
-    fn lt(self, other: Self) -> bool {
-        self < other
-    }
-    #[inline(always)]
-    fn eq(self, other: Self) -> bool {
-        self == other
-    }
-    #[inline(always)]
-    fn indicator(mask: bool) -> Self {
-        f32::from(u8::from(mask))
-    }
-    #[inline(always)]
-    fn truncate_index(self) -> (usize, Self) {
-        let index = self as usize;
-        (index, index as f32)
-    }
-    #[inline(always)]
-    fn select(mask: bool, a: Self, b: Self) -> Self {
-        crate::math::select(mask, a, b)
-    }
-    #[inline(always)]
-    fn choose(mask: bool, a: Self, b: Self) -> Self {
-        if mask {
-            a
-        } else {
-            b
-        }
-    }
-    #[inline(always)]
-    fn max(self, other: Self) -> Self {
-        crate::math::max(self, other)
-    }
-    #[inline(always)]
-    fn min(self, other: Self) -> Self {
-        crate::math::min(self, other)
-    }
-    #[inline(always)]
-    fn sqrt_non_negative(self) -> Self {
-        crate::math::sqrt_non_negative(self)
-    }
-    #[inline(always)]
-    fn split_normal(self) -> (Self, Self) {
-        crate::math::split_normal(self)
-    }
-    #[inline(always)]
-    fn round_with_pow2(self) -> (Self, Self) {
-        crate::math::round_with_pow2(self)
-    }
-    #[inline(always)]
-    fn from_per_lane<U: Copy + Default + core::fmt::Debug>(
-        items: &U,
-        mut f: impl FnMut(&U) -> f32,
-    ) -> Self {
-        f(items)
-    }
-    #[inline(always)]
-    fn lane(self, i: usize) -> f32 {
-        if i == 0 {
-            self
-        } else {
-            0.0
-        }
-    }
-    #[inline(always)]
-    fn to_per_lane(self) -> f32 {
-        self
-    }
-    #[inline(always)]
-    fn item<U: Copy + Default + core::fmt::Debug>(items: &U, i: usize) -> U {
-        if i == 0 {
-            *items
-        } else {
-            U::default()
-        }
-    }
-    #[inline(always)]
-    fn build<U: Copy + Default + core::fmt::Debug>(mut f: impl FnMut(usize) -> U) -> U {
-        f(0)
-    }
-    #[inline(always)]
-    fn gather<U>(items: &[U], f: impl Fn(&U) -> f32) -> Self {
-        items.first().map_or(0.0, f)
-    }
-}
-
 pub(crate) use simd::{F32x4, Mask4};
 
 #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
 pub(crate) use avx::{F32x8, Mask8};
+
+/// 1.5·2²³: adding and subtracting it rounds an f32 of magnitude < 2²² to the nearest integer
+/// (`crate::math::round_with_pow2` and its lane copies in the backends).
+pub(crate) const ROUNDER: f32 = 12_582_912.0;
 
 /// The host's lane type for the lockstep stages: the widest register the build may use —
 /// eight lanes (`F32x8`) where AVX2 is enabled (the workspace's `.cargo/config.toml` enables
@@ -350,6 +249,3 @@ mod simd;
 /// AVX2 where the build enables it: eight lanes, one instruction per operation and lane group.
 #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
 mod avx;
-
-#[cfg(test)]
-mod tests;

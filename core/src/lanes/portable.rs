@@ -119,28 +119,28 @@ pub(super) fn select(mask: Mask4, a: F32x4, b: F32x4) -> F32x4 {
     let [m0, m1, m2, m3] = mask.0;
     let [a0, a1, a2, a3] = a.0;
     let [b0, b1, b2, b3] = b.0;
-    let s = crate::math::select;
+    let s = <f32 as super::Real>::select;
     F32x4([s(m0, a0, b0), s(m1, a1, b1), s(m2, a2, b2), s(m3, a3, b3)])
 }
 #[inline(always)]
 pub(super) fn max(a: F32x4, b: F32x4) -> F32x4 {
-    a.zip(b, crate::math::max)
+    a.zip(b, <f32 as super::Real>::max)
 }
 #[inline(always)]
 pub(super) fn min(a: F32x4, b: F32x4) -> F32x4 {
-    a.zip(b, crate::math::min)
+    a.zip(b, <f32 as super::Real>::min)
 }
 #[inline(always)]
 pub(super) fn sqrt_non_negative(a: F32x4) -> F32x4 {
-    F32x4(a.0.map(crate::math::sqrt_non_negative))
+    F32x4(a.0.map(<f32 as super::Real>::sqrt_non_negative))
 }
 #[inline(always)]
 pub(super) fn split_normal(a: F32x4) -> (F32x4, F32x4) {
-    let r = a.0.map(crate::math::split_normal);
+    let r = a.0.map(<f32 as super::Real>::split_normal);
     (F32x4(r.map(|p| p.0)), F32x4(r.map(|p| p.1)))
 }
 #[inline(always)]
 pub(super) fn round_with_pow2(a: F32x4) -> (F32x4, F32x4) {
-    let r = a.0.map(crate::math::round_with_pow2);
+    let r = a.0.map(<f32 as super::Real>::round_with_pow2);
     (F32x4(r.map(|p| p.0)), F32x4(r.map(|p| p.1)))
 }

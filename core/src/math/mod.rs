@@ -9,13 +9,15 @@
 //! The film network has its own logarithm and exponentials, by series (`series`): they
 //! round differently from these, and each family's bits are pinned by its users (see there).
 
-use crate::lanes::Real;
+use crate::lanes::{Real, ROUNDER};
+
+#[cfg(test)]
+mod lanes_tests;
+mod real;
 
 pub mod series;
 
 const SQRT_2: f32 = core::f32::consts::SQRT_2;
-/// 1.5·2²³: adding and subtracting it rounds an f32 of magnitude < 2²² to the nearest integer.
-pub(crate) const ROUNDER: f32 = 12_582_912.0;
 
 // Polynomial coefficients: least-squares fits on Chebyshev nodes (near-minimax), rounded to
 // f32 and checked in f32 arithmetic (tests below).

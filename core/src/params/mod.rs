@@ -4,13 +4,11 @@
 //! [`ParamError`](crate::ParamError) naming the field, the value and the allowed range, so the
 //! rest of the core can rely on finite, physically meaningful numbers without checking again.
 
-mod design;
 mod geometry;
 mod lubricant;
 mod material;
 mod operating;
 
-pub use design::BearingDesign;
 pub use geometry::{BearingGeometry, Crown};
 pub use lubricant::Lubricant;
 pub use material::{reduced_modulus, Material};

@@ -1,10 +1,10 @@
 //! A bearing described field by field, with the units in the field names, and the reference
 //! bearings of `configs/` as presets.
 
-use super::{BearingGeometry, Crown, Lubricant, Material};
-use crate::bearing::BearingParams;
+use super::BearingParams;
 use crate::contact::ContactLaw;
 use crate::error::ParamError;
+use crate::params::{BearingGeometry, Crown, Lubricant, Material};
 
 /// Everything that defines a lubricated cylindrical roller bearing, by name and unit: the
 /// fields of a bearing configuration file (`configs/*.toml`). [`BearingDesign::params`]

@@ -598,12 +598,15 @@ pub(super) mod tests {
     use crate::film::Regression;
 
     /// The reduced modulus of the tests' contacts (Pa).
-    pub(in crate::bearing) const MODULUS_PA: f32 = 2.3e11;
+    pub(in crate::bearing::roller) const MODULUS_PA: f32 = 2.3e11;
 
     /// The inner and outer contact templates of a hub-bearing-like roller (15 mm, R 3.7 and
     /// 5.1 mm, α 21 GPa⁻¹, η₀ 0.08 Pa·s) at entrainment speed `speed_m_s` and reduced modulus
     /// `modulus_pa`.
-    pub(in crate::bearing) fn contacts_with(speed_m_s: f32, modulus_pa: f32) -> [ContactInput; 2] {
+    pub(in crate::bearing::roller) fn contacts_with(
+        speed_m_s: f32,
+        modulus_pa: f32,
+    ) -> [ContactInput; 2] {
         let c = |r: f32| ContactInput {
             load_n: 0.0,
             length_m: 0.015,
@@ -621,7 +624,7 @@ pub(super) mod tests {
     }
 
     /// Martin's coefficients B = MARTIN·η₀·u·R·l of the contacts.
-    pub(in crate::bearing) fn martin(c: &[ContactInput; 2]) -> [f32; 2] {
+    pub(in crate::bearing::roller) fn martin(c: &[ContactInput; 2]) -> [f32; 2] {
         c.map(|c| {
             crate::film::MARTIN
                 * c.viscosity_pa_s

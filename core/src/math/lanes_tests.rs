@@ -1,7 +1,7 @@
-//! The lanes against the one-number operations, bit for bit: each test is written once for
+//! The lanes of `crate::lanes` against the one-number operations of this module, bit for bit: each test is written once for
 //! any lane type and run for every width the build has (four lanes always, eight with AVX2).
 
-use super::*;
+use crate::lanes::*;
 
 /// Lanes from a slice of exactly `T::LANES` values, lane i from value i (by `gather`, whose
 /// lane order the gather test checks on its own).

@@ -2,8 +2,8 @@
 //! the cage angle for any run length.
 
 use super::*;
-use crate::params::BearingDesign;
-use core::f32::consts::PI;
+use crate::bearing::BearingDesign;
+use core::f32::consts::{PI, TAU};
 
 /// The inner race on a 5 µm whirl orbit at ω, `t` seconds in.
 fn whirl(t: f32, omega: f32) -> OperatingState {

@@ -2,8 +2,8 @@
 //! §4.1) and the film corrections (§5.4).
 
 use super::*;
+use crate::bearing::BearingDesign;
 use crate::film::corrections::{FilmCorrections, Starvation, ThermalCorrection};
-use crate::params::BearingDesign;
 
 /// Hub-motor shaft speed of the tests: 21 000 rpm (rad/s).
 const OMEGA: f32 = 2199.115;

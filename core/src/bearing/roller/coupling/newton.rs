@@ -3,7 +3,7 @@
 //! its film sum (the parent module explains the equation and why the work is fixed).
 
 use super::PowerLaw;
-use crate::bearing::film_table::{FilmSums, StepFilms};
+use crate::bearing::roller::film_table::{FilmSums, StepFilms};
 use crate::lanes::Real;
 use crate::math::{exp2_in_range, exp_in_range, ln_normal};
 
@@ -234,8 +234,8 @@ impl<T: Real> Newton<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bearing::film_table::tests::{contacts_with, martin, MODULUS_PA};
-    use crate::bearing::film_table::FilmTable;
+    use crate::bearing::roller::film_table::tests::{contacts_with, martin, MODULUS_PA};
+    use crate::bearing::roller::film_table::FilmTable;
     use crate::film::Regression;
     use crate::lanes::F32x4;
 
