@@ -76,7 +76,7 @@ pub mod params;
 
 pub use bearing::{
     Bearing, BearingDesign, BearingOutput, BearingParams, DynBearing, FilmKind, OutputView,
-    RollerOutput,
+    RollerOutput, RollerTotals,
 };
 pub use contact::ContactLaw;
 pub use error::{Allowed, ParamError};

@@ -344,16 +344,17 @@ impl BearingOutput {
     pub(crate) unsafe fn write(view: &OutputView<'_>, cage_angle_rad: f32, out: *mut Self) {
         // SAFETY: the caller's contract; each field is written through a raw pointer, so no
         // reference to possibly uninitialised memory is made.
+        let totals = &view.totals;
         unsafe {
-            addr_of_mut!((*out).force_n).write(view.force_n);
-            addr_of_mut!((*out).moment_nm).write(view.moment_nm);
-            addr_of_mut!((*out).stiffness).write(view.stiffness);
-            addr_of_mut!((*out).damping_n_s_per_m).write(view.damping_n_s_per_m);
+            addr_of_mut!((*out).force_n).write(totals.force_n);
+            addr_of_mut!((*out).moment_nm).write(totals.moment_nm);
+            addr_of_mut!((*out).stiffness).write(totals.stiffness);
+            addr_of_mut!((*out).damping_n_s_per_m).write(totals.damping_n_s_per_m);
             addr_of_mut!((*out).cage_angle_rad).write(cage_angle_rad);
-            addr_of_mut!((*out).centrifugal_force_n).write(view.centrifugal_force_n);
-            addr_of_mut!((*out).friction_torque_nm).write(view.friction_torque_nm);
-            addr_of_mut!((*out).power_loss_w).write(view.power_loss_w);
-            addr_of_mut!((*out).power_loss_split_w).write(view.power_loss_split_w);
+            addr_of_mut!((*out).centrifugal_force_n).write(totals.centrifugal_force_n);
+            addr_of_mut!((*out).friction_torque_nm).write(totals.friction_torque_nm);
+            addr_of_mut!((*out).power_loss_w).write(totals.power_loss_w);
+            addr_of_mut!((*out).power_loss_split_w).write(totals.power_loss_split_w);
             // At most BEARING_MAX_ROLLERS (17): the storage holds no larger bearing.
             let count = view.rollers.len().min(BEARING_MAX_ROLLERS);
             addr_of_mut!((*out).roller_count).write(count as u32);

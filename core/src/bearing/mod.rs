@@ -25,5 +25,5 @@ pub use dynamic::{boxed, MAX_ROLLERS, MIN_ROLLERS, SLICES};
 pub use film_kind::{FilmKind, UnknownFilmKind};
 pub use roller::{
     Bearing, BearingDesign, BearingOutput, BearingParams, Equilibrium, OutputView, RollerOutput,
-    SETTLE_STEPS, STEEL_DENSITY_KG_M3,
+    RollerTotals, SETTLE_STEPS, STEEL_DENSITY_KG_M3,
 };

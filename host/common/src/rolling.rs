@@ -5,32 +5,25 @@
 //! as an [`OutputView`]; a [`StepSnapshot`] keeps it after the bearing steps on.
 
 pub use bearing_core::bearing::{boxed, MAX_ROLLERS, MIN_ROLLERS, SLICES};
-use bearing_core::{OutputView, RollerOutput};
+use bearing_core::{OutputView, RollerOutput, RollerTotals};
 
-/// The output of one step with per-roller data in a `Vec`.
+/// The output of one step with per-roller data in a `Vec`: the core's totals
+/// ([`RollerTotals`], also read directly: `snapshot.force_n`) and each roller.
 #[derive(Clone, Debug, PartialEq)]
 pub struct StepSnapshot {
-    /// [F_x, F_y] on the inner race (N).
-    pub force_n: [f32; 2],
-    /// [M_x, M_y] on the inner race (N·m).
-    pub moment_nm: [f32; 2],
-    /// −∂(F, M)/∂(x, y, tilt_x, tilt_y).
-    pub stiffness: [[f32; 4]; 4],
-    /// −∂F/∂(ẋ, ẏ) (N·s/m).
-    pub damping_n_s_per_m: [[f32; 2]; 2],
-    /// Each roller's centrifugal force on the outer race (N; 0 when left out): a roller's
-    /// outer contact carries its `load_n` plus this.
-    pub centrifugal_force_n: f32,
-    /// Friction torque on the inner ring (N·m).
-    pub friction_torque_nm: f32,
-    /// Power loss (W).
-    pub power_loss_w: f32,
-    /// Power loss split [rolling, viscous, boundary] (W).
-    pub power_loss_split_w: [f32; 3],
+    /// Forces, moments, stiffness, damping and friction summed over the rollers.
+    pub totals: RollerTotals,
     /// Film ratios [λ_in, λ_out] per roller.
     pub lambda: Vec<[f32; 2]>,
     /// Per roller.
     pub rollers: Vec<RollerOutput>,
+}
+
+impl std::ops::Deref for StepSnapshot {
+    type Target = RollerTotals;
+    fn deref(&self) -> &RollerTotals {
+        &self.totals
+    }
 }
 
 impl StepSnapshot {
@@ -38,24 +31,12 @@ impl StepSnapshot {
     pub fn max_roller_load_n(&self) -> f32 {
         self.rollers.iter().fold(0.0, |m, r| m.max(r.load_n))
     }
-    /// 2×2 radial stiffness (N/m).
-    pub fn radial_stiffness_n_per_m(&self) -> [[f32; 2]; 2] {
-        let [r0, r1, _, _] = self.stiffness;
-        [[r0[0], r0[1]], [r1[0], r1[1]]]
-    }
 }
 
 impl From<OutputView<'_>> for StepSnapshot {
     fn from(o: OutputView<'_>) -> Self {
         StepSnapshot {
-            force_n: o.force_n,
-            moment_nm: o.moment_nm,
-            stiffness: o.stiffness,
-            damping_n_s_per_m: o.damping_n_s_per_m,
-            centrifugal_force_n: o.centrifugal_force_n,
-            friction_torque_nm: o.friction_torque_nm,
-            power_loss_w: o.power_loss_w,
-            power_loss_split_w: o.power_loss_split_w,
+            totals: o.totals,
             lambda: o.lambda.to_vec(),
             rollers: o.rollers.to_vec(),
         }

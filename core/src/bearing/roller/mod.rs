@@ -21,6 +21,7 @@
 
 mod coupling;
 mod design;
+mod dry;
 mod equilibrium;
 mod film_table;
 mod friction;
@@ -33,7 +34,7 @@ mod parts;
 
 pub use design::BearingDesign;
 pub use equilibrium::Equilibrium;
-pub use output::{BearingOutput, OutputView, RollerOutput};
+pub use output::{BearingOutput, OutputView, RollerOutput, RollerTotals};
 pub use params::{BearingParams, STEEL_DENSITY_KG_M3};
 use parts::{Parts, Place, LOCKSTEP};
 
@@ -42,8 +43,9 @@ use super::FilmKind;
 use crate::contact::SlicedRoller;
 use crate::error::{in_range, Allowed, ParamError};
 use crate::film::ann::{AnnF32, AnnInt};
-use crate::film::{FilmModel, FilmSource, Regime, RegimeAxis, Regression, ServedLoads};
-use crate::lanes::{Wide, WIDE_LANES};
+use crate::film::{
+    ContactInput, FilmModel, FilmSource, Regime, RegimeAxis, Regression, ServedLoads,
+};
 use crate::math::ln;
 use crate::params::{OperatingState, MAX_CAGE_ANGLE_RAD, MAX_TIME_STEP_S};
 use coupling::NEWTON_ITERATIONS;
@@ -392,6 +394,35 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
         self.output
     }
 
+    /// Renew the loads the film model serves at each contact kind, as a pass renews the film
+    /// table (`renew_all`: every node; `renew`: the next one). Inlined into the lubricated
+    /// pass, which it was written in: the same instructions.
+    #[inline(always)]
+    fn renew_served<F: FilmModel>(
+        &mut self,
+        film: &F,
+        templates: &[ContactInput; 2],
+        renew_all: bool,
+        renew: bool,
+    ) {
+        // The loads the film model serves follow the speed. They are renewed with the table,
+        // for one contact per step (the one whose node this step renews; both when the whole
+        // table is), so a contact's interval is at most a step old.
+        // One code path whichever contact it is (an index, not a branch per contact: with
+        // the regression's trivial interval, the two branches differed by an instruction).
+        // A trial renews nothing, except a table never filled: then every trial fills all of
+        // it at its own speed (the same bits whatever the trials before), and the first
+        // committing pass fills it again.
+        let renewed = self.table.next_contact();
+        if renew_all {
+            self.served = templates.map(|t| film.served_loads(&t));
+        } else if let (true, Some(slot), Some(template)) =
+            (renew, self.served.get_mut(renewed), templates.get(renewed))
+        {
+            *slot = film.served_loads(template);
+        }
+    }
+
     /// One lubricated pass with the film model `film` (the bearing's own) at cage angle
     /// `cage_angle_rad`; `pass` says what it commits.
     ///
@@ -427,24 +458,9 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
                 .copied()
                 .unwrap_or(FilmSource::None),
         };
-        // The loads the film model serves follow the speed. They are renewed with the table,
-        // for one contact per step (the one whose node this step renews; both when the whole
-        // table is), so a contact's interval is at most a step old.
-        // One code path whichever contact it is (an index, not a branch per contact: with
-        // the regression's trivial interval, the two branches differed by an instruction).
-        // A trial renews nothing, except a table never filled: then every trial fills all of
-        // it at its own speed (the same bits whatever the trials before), and the first
-        // committing pass fills it again.
         let renew_all = self.table_stale | (pass == Pass::RenewAll);
         let renew = (pass != Pass::Trial) | self.table_stale;
-        let renewed = self.table.next_contact();
-        if renew_all {
-            self.served = templates.map(|t| film.served_loads(&t));
-        } else if let (true, Some(slot), Some(template)) =
-            (renew, self.served.get_mut(renewed), templates.get(renewed))
-        {
-            *slot = film.served_loads(template);
-        }
+        self.renew_served(film, &templates, renew_all, renew);
         let served = self.served.map(standstill);
         let martin = [inner.martin, outer.martin];
         let speed_scale = FilmTable::speed_scale(&templates);
@@ -560,49 +576,12 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             },
         );
         if CENTRIFUGAL {
-            self.output.centrifugal_force_n = centrifugal_n.unwrap_or(0.0);
+            self.output.totals.centrifugal_force_n = centrifugal_n.unwrap_or(0.0);
         }
         // The loads the next step renews the table at first; unchanged when nothing is loaded.
         if (span.0 <= span.1) & (pass != Pass::Trial) {
             self.load_span = span;
         }
-    }
-
-    /// The friction of the last computed output (docs/physics.md §8): fills its rollers' film
-    /// ratios λ_in, λ_out and its friction torque, power loss and split at the shaft speed ω
-    /// of that step (`shaft_speed_rad_s`, rad/s), and returns the output. The same work for
-    /// every input, ≈ 2 k Cortex-M4 instructions per roller: it is kept out of
-    /// [`Bearing::advance`] so that the real-time step costs what it did, and runs at the rate
-    /// the friction is wanted. The dry model has no film and no friction: its output keeps
-    /// zeros there.
-    ///
-    /// ```
-    /// use bearing_core::{Bearing, BearingDesign, FilmKind, OperatingState};
-    /// let mut bearing = Bearing::<12, 10>::new(BearingDesign::NU205.params()?, FilmKind::Regression)?;
-    /// let state = OperatingState::new([0.0, -4.0e-6], [0.0; 2], [0.0; 2], 1000.0)?;
-    /// bearing.settle(&state, bearing_core::bearing::SETTLE_STEPS)?;
-    /// let out = bearing.friction(state.shaft_speed_rad_s)?;
-    /// assert!(out.power_loss_w > 0.0);
-    /// assert!((out.power_loss_w / (out.friction_torque_nm * 1000.0) - 1.0).abs() < 1e-5);
-    /// # Ok::<(), bearing_core::ParamError>(())
-    /// ```
-    pub fn friction(&mut self, shaft_speed_rad_s: f32) -> Result<&BearingOutput<Z>, ParamError> {
-        in_range(
-            "shaft_speed_rad_s",
-            shaft_speed_rad_s,
-            -crate::params::MAX_SHAFT_SPEED_RAD_S,
-            crate::params::MAX_SHAFT_SPEED_RAD_S,
-        )?;
-        if self.film != FilmKind::Dry {
-            let [inner, outer] = self.contact_contexts(shaft_speed_rad_s);
-            friction::friction_pass(
-                &self.params,
-                &[inner.template, outer.template],
-                &mut self.output,
-                shaft_speed_rad_s,
-            );
-        }
-        Ok(&self.output)
     }
 
     /// Converge the warm start at `state` before a real-time loop, or for quasi-static use
@@ -625,66 +604,6 @@ impl<const Z: usize, const S: usize> Bearing<Z, S> {
             }
         }
         Ok(&self.output)
-    }
-
-    /// One dry pass (film ≡ 0) at cage angle `cage_angle_rad`: today's multi-body practice,
-    /// for comparison. It keeps nothing from one step to the next but the cage angle.
-    fn dry(&mut self, state: &OperatingState, cage_angle_rad: f32) {
-        let centrifugal_n = self.params.centrifugal_force_n(state.shaft_speed_rad_s);
-        let parts = Parts {
-            params: &self.params,
-            roller: &self.roller,
-            pitch: &self.pitch,
-        };
-        let places = parts.places(state, cage_angle_rad);
-        // The host runs the slice pass of eight rollers at a time in SIMD lanes (four without
-        // AVX2), as the lubricated step does; the M4 one roller after another. Same operations,
-        // same results bit for bit (`slicing`'s lane test).
-        let mut loads = [crate::contact::RollerLoad::default(); Z];
-        if LOCKSTEP {
-            for (group, group_places) in loads.chunks_mut(WIDE_LANES).zip(places.chunks(WIDE_LANES))
-            {
-                let mut approach = [0.0; WIDE_LANES];
-                let mut tilt = [0.0; WIDE_LANES];
-                for ((a, t), place) in approach.iter_mut().zip(tilt.iter_mut()).zip(group_places) {
-                    *a = place.geometric_m;
-                    *t = place.tilt_rad;
-                }
-                let group_loads = self
-                    .roller
-                    .evaluate_lanes::<Wide, { WIDE_LANES }>(approach, tilt);
-                for (i, load) in group.iter_mut().enumerate() {
-                    *load = group_loads.lane(i);
-                }
-            }
-        }
-        parts.assemble(
-            &mut self.memory,
-            &mut self.output,
-            state,
-            cage_angle_rad,
-            &places,
-            |roller, _, j, geometric, tilt| {
-                let slices = if LOCKSTEP {
-                    loads.get(j).copied().unwrap_or_default()
-                } else {
-                    roller.evaluate(geometric, tilt)
-                };
-                let load = match centrifugal_n {
-                    Some(f_c) => coupling::dry_centrifugal(roller, slices, geometric, f_c),
-                    None => slices,
-                };
-                let roller = RollerOutput {
-                    approach_m: geometric,
-                    roller_stiffness_n_per_m: load.stiffness_n_per_m,
-                    regime_in: Regime::Dry,
-                    regime_out: Regime::Dry,
-                    ..RollerOutput::ZERO
-                };
-                (load, roller, 0.0)
-            },
-        );
-        self.output.centrifugal_force_n = centrifugal_n.unwrap_or(0.0);
     }
 }
 

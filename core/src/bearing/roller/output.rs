@@ -61,11 +61,13 @@ impl RollerOutput {
     };
 }
 
-/// Result of one bearing step for `Z` rollers.
+/// The sums over the rollers of one step: force, moment, stiffness and damping on the inner
+/// race, and the friction. The one copy of these fields: [`BearingOutput`] and [`OutputView`]
+/// hold one, and read as one (`out.force_n`), through `Deref`.
 ///
 /// Generalised coordinates of the inner race are (x, y, tilt about x, tilt about y).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BearingOutput<const Z: usize> {
+pub struct RollerTotals {
     /// Force of the rollers on the inner race [F_x, F_y] (N).
     pub force_n: [f32; 2],
     /// Moment of the rollers on the inner race [M_x, M_y] (N·m).
@@ -84,17 +86,10 @@ pub struct BearingOutput<const Z: usize> {
     pub power_loss_w: f32,
     /// The power loss split into [rolling, viscous, boundary] (W).
     pub power_loss_split_w: [f32; 3],
-    /// Film ratios [λ_in, λ_out] = h/σ of each roller's contacts (central film over the
-    /// composite roughness; docs/physics.md §8.1), filled by
-    /// [`Bearing::friction`](crate::Bearing::friction) like the friction (outside
-    /// [`RollerOutput`], which the step writes whole).
-    pub lambda: [[f32; 2]; Z],
-    /// Per-roller states.
-    pub rollers: [RollerOutput; Z],
 }
 
-impl<const Z: usize> BearingOutput<Z> {
-    /// All zero, status `Ok`.
+impl RollerTotals {
+    /// All zero.
     pub const ZERO: Self = Self {
         force_n: [0.0; 2],
         moment_nm: [0.0; 2],
@@ -104,6 +99,41 @@ impl<const Z: usize> BearingOutput<Z> {
         friction_torque_nm: 0.0,
         power_loss_w: 0.0,
         power_loss_split_w: [0.0; 3],
+    };
+
+    /// The 2×2 radial stiffness block −∂(F_x, F_y)/∂(x, y) (N/m).
+    pub fn radial_stiffness_n_per_m(&self) -> [[f32; 2]; 2] {
+        let [r0, r1, _, _] = self.stiffness;
+        [[r0[0], r0[1]], [r1[0], r1[1]]]
+    }
+}
+
+/// Result of one bearing step for `Z` rollers: the totals, and each roller.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BearingOutput<const Z: usize> {
+    /// Forces, moments, stiffness, damping and friction summed over the rollers (also read
+    /// directly: `out.force_n`).
+    pub totals: RollerTotals,
+    /// Film ratios [λ_in, λ_out] = h/σ of each roller's contacts (central film over the
+    /// composite roughness; docs/physics.md §8.1), filled by
+    /// [`Bearing::friction`](crate::Bearing::friction) like the friction (outside
+    /// [`RollerOutput`], which the step writes whole).
+    pub lambda: [[f32; 2]; Z],
+    /// Per-roller states.
+    pub rollers: [RollerOutput; Z],
+}
+
+impl<const Z: usize> core::ops::Deref for BearingOutput<Z> {
+    type Target = RollerTotals;
+    fn deref(&self) -> &RollerTotals {
+        &self.totals
+    }
+}
+
+impl<const Z: usize> BearingOutput<Z> {
+    /// All zero.
+    pub const ZERO: Self = Self {
+        totals: RollerTotals::ZERO,
         lambda: [[0.0; 2]; Z],
         rollers: [RollerOutput::ZERO; Z],
     };
@@ -111,22 +141,10 @@ impl<const Z: usize> BearingOutput<Z> {
     /// The same output with its rollers as a slice, whatever `Z`.
     pub fn view(&self) -> OutputView<'_> {
         OutputView {
-            force_n: self.force_n,
-            moment_nm: self.moment_nm,
-            stiffness: self.stiffness,
-            damping_n_s_per_m: self.damping_n_s_per_m,
-            centrifugal_force_n: self.centrifugal_force_n,
-            friction_torque_nm: self.friction_torque_nm,
-            power_loss_w: self.power_loss_w,
-            power_loss_split_w: self.power_loss_split_w,
+            totals: self.totals,
             lambda: &self.lambda,
             rollers: &self.rollers,
         }
-    }
-
-    /// The 2×2 radial stiffness block −∂(F_x, F_y)/∂(x, y) (N/m).
-    pub fn radial_stiffness_n_per_m(&self) -> [[f32; 2]; 2] {
-        self.view().radial_stiffness_n_per_m()
     }
 
     /// Largest roller load (N).
@@ -140,42 +158,29 @@ impl<const Z: usize> BearingOutput<Z> {
     }
 }
 
-/// A [`BearingOutput`] of any roller count: the sums by value, the rollers borrowed.
+/// A [`BearingOutput`] of any roller count: the totals by value, the rollers borrowed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OutputView<'a> {
-    /// Force of the rollers on the inner race [F_x, F_y] (N).
-    pub force_n: [f32; 2],
-    /// Moment of the rollers on the inner race [M_x, M_y] (N·m).
-    pub moment_nm: [f32; 2],
-    /// Stiffness −∂(F_x, F_y, M_x, M_y)/∂(x, y, tilt_x, tilt_y): N/m, N, N·m per rad.
-    pub stiffness: [[f32; 4]; 4],
-    /// Damping −∂(F_x, F_y)/∂(ẋ, ẏ) (N·s/m).
-    pub damping_n_s_per_m: [[f32; 2]; 2],
-    /// Each roller's centrifugal force on the outer race (N; see [`BearingOutput`]).
-    pub centrifugal_force_n: f32,
-    /// Friction torque on the inner ring (N·m; docs/physics.md §8.4), filled by
-    /// [`Bearing::friction`](crate::Bearing::friction) (0 until then, and for the dry model).
-    pub friction_torque_nm: f32,
-    /// Power loss of the bearing's roller–race contacts (W).
-    pub power_loss_w: f32,
-    /// The power loss split into [rolling, viscous, boundary] (W).
-    pub power_loss_split_w: [f32; 3],
+    /// Forces, moments, stiffness, damping and friction summed over the rollers (also read
+    /// directly: `view.force_n`).
+    pub totals: RollerTotals,
     /// Film ratios [λ_in, λ_out] of each roller's contacts.
     pub lambda: &'a [[f32; 2]],
     /// Per-roller states, one per roller.
     pub rollers: &'a [RollerOutput],
 }
 
+impl core::ops::Deref for OutputView<'_> {
+    type Target = RollerTotals;
+    fn deref(&self) -> &RollerTotals {
+        &self.totals
+    }
+}
+
 impl OutputView<'_> {
     /// The load of `roller`'s outer contact, Q_out = Q_in + F_c (N).
     pub fn load_out_n(&self, roller: &RollerOutput) -> f32 {
-        roller.load_n + self.centrifugal_force_n
-    }
-
-    /// The 2×2 radial stiffness block −∂(F_x, F_y)/∂(x, y) (N/m).
-    pub fn radial_stiffness_n_per_m(&self) -> [[f32; 2]; 2] {
-        let [r0, r1, _, _] = self.stiffness;
-        [[r0[0], r0[1]], [r1[0], r1[1]]]
+        roller.load_n + self.totals.centrifugal_force_n
     }
 
     /// Largest roller load (N).

@@ -75,8 +75,8 @@ impl<const Z: usize, const S: usize> Parts<'_, Z, S> {
         let damping = self.params.damping_factor_s;
         // Every roller entry is written below; the sums start from zero (in place: the output
         // is a kilobyte and a half, and a copy of it costs as much as a roller).
-        out.force_n = [0.0; 2];
-        out.moment_nm = [0.0; 2];
+        out.totals.force_n = [0.0; 2];
+        out.totals.moment_nm = [0.0; 2];
         let mut stiffness = StiffnessSums::default();
         let cage_angle = wrap_angle(cage_angle_rad);
         for (j, ((&(_, _, pitch_angle), place), (slot, roller_memory))) in self
@@ -93,10 +93,10 @@ impl<const Z: usize, const S: usize> Parts<'_, Z, S> {
             let damping_force = damping * load.stiffness_n_per_m * approach_rate;
             // A roller pushes, it cannot pull: the total roller force is clamped at zero.
             let roller_force = crate::math::max(load.load_n + damping_force, 0.0);
-            out.force_n[0] -= roller_force * c;
-            out.force_n[1] -= roller_force * s;
-            out.moment_nm[0] += load.moment_nm * s;
-            out.moment_nm[1] -= load.moment_nm * c;
+            out.totals.force_n[0] -= roller_force * c;
+            out.totals.force_n[1] -= roller_force * s;
+            out.totals.moment_nm[0] += load.moment_nm * s;
+            out.totals.moment_nm[1] -= load.moment_nm * c;
             stiffness.add(
                 (c, s),
                 [
@@ -116,8 +116,8 @@ impl<const Z: usize, const S: usize> Parts<'_, Z, S> {
             roller.contact_stiffness_n_per_m = load.stiffness_n_per_m;
             *slot = roller;
         }
-        out.stiffness = stiffness.matrix();
-        out.damping_n_s_per_m = stiffness.damping(damping);
+        out.totals.stiffness = stiffness.matrix();
+        out.totals.damping_n_s_per_m = stiffness.damping(damping);
     }
 }
 
