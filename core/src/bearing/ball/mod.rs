@@ -18,14 +18,14 @@
 //!   geometric approach δ_g = A − A₀ of the two contacts together.
 //! - The films of both contacts act as rigid spacers (docs/physics.md §4, as for rollers):
 //!   the steel's elastic approach is δ = δ_g + h_i + h_o, and the ball load solves
-//!   Q = (δ/(c_i + c_o))^{3/2} ([`contact`]), whose films depend on Q.
+//!   Q = (δ/(c_i + c_o))^{3/2} (`contact.rs`), whose films depend on Q.
 //! - The ball pushes the inner ring along the line of centres: the force on the inner ring is
 //!   F = −Σ_j Q_j (cos α cos ψ, cos α sin ψ, sin α) and the moments M_x = −Σ Q sin α R_i sin ψ,
 //!   M_y = Σ Q sin α R_i cos ψ (by virtual work on δ_z, so the stiffness is symmetric).
 //!
 //! With `centrifugal` on ([`BallBearingDesign::centrifugal`]) each ball also carries its
 //! centrifugal force, and its centre is solved between the grooves so that the inner and outer
-//! contact angles and loads differ ([`centrifugal`]); off, the outputs are those above. Ball
+//! contact angles and loads differ (`centrifugal.rs`); off, the outputs are those above. Ball
 //! spin and gyroscopic moments are not modelled (docs/ball_bearings.md, limits).
 
 mod centrifugal;

@@ -63,7 +63,7 @@ pub struct StaticSolution<const Z: usize> {
 pub enum StaticSolveError {
     /// A load or speed out of range, named.
     Param(ParamError),
-    /// No equilibrium within [`MAX_STATIC_ITERATIONS`] steps (for instance an
+    /// No equilibrium within `MAX_STATIC_ITERATIONS` (200) steps (for instance an
     /// angular-contact bearing pulled in −z, or a load beyond what the balls can carry within
     /// 1 mm): the scaled residual left (N).
     NotConverged {

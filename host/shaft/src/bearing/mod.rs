@@ -5,7 +5,7 @@
 //! Outer races sit in a rigid housing, so the bearing acts on the x and y DOFs of its node only.
 //! Two implementations: [`LinearBearing`] (spring–damper, possibly anisotropic and cross-coupled;
 //! used for the textbook cases) and the nonlinear roller bearing of the no_std core, reached
-//! through [`roller_bearing`] (adapter in [`crate::bearing::roller_bearing`]).
+//! through [`roller_bearing()`] (adapter in the module [`mod@crate::bearing::roller_bearing`]).
 
 pub mod core_bearing;
 pub mod roller_bearing;
