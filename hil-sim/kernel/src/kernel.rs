@@ -200,7 +200,7 @@ impl Kernel {
     /// the outputs.
     // Inlined into the caller's crate (the firmware's replay loop, the host's stepper) and
     // compiled there, as one unit with the loop: measured on the M4 (`hil-sim qemu`, hub motor,
-    // int network), 27 330 instructions per step, every step; as a call into this crate the
+    // int network), 27 280 instructions per step, every step; as a call into this crate the
     // count was ≈ 45 higher and varied with the data, which `hil-sim qemu` refuses (min = max).
     #[inline(always)]
     pub fn step(&mut self, sample: &Sample, out: &mut StepOutputs) -> Result<(), KernelFault> {
