@@ -21,7 +21,7 @@ impl<const Z: usize> BearingOutput<Z> {
     /// use nalgebra::Vector2;
     ///
     /// let mut out = BearingOutput::<17>::ZERO;
-    /// out.force_n = [120.0, -4500.0];
+    /// out.totals.force_n = [120.0, -4500.0];
     /// assert_eq!(out.force_vector_n(), Vector2::new(120.0, -4500.0));
     /// ```
     pub fn force_vector_n(&self) -> Vector2<f32> {
@@ -35,7 +35,7 @@ impl<const Z: usize> BearingOutput<Z> {
     /// use nalgebra::Vector2;
     ///
     /// let mut out = BearingOutput::<17>::ZERO;
-    /// out.moment_nm = [0.5, -1.25];
+    /// out.totals.moment_nm = [0.5, -1.25];
     /// assert_eq!(out.moment_vector_nm(), Vector2::new(0.5, -1.25));
     /// ```
     pub fn moment_vector_nm(&self) -> Vector2<f32> {
@@ -50,8 +50,8 @@ impl<const Z: usize> BearingOutput<Z> {
     /// use nalgebra::{Matrix4, Vector4};
     ///
     /// let mut out = BearingOutput::<17>::ZERO;
-    /// out.stiffness[0] = [2.0e8, 1.0e6, 0.0, 3.0e5];
-    /// out.stiffness[3] = [3.0e5, 0.0, 0.0, 4.0e3];
+    /// out.totals.stiffness[0] = [2.0e8, 1.0e6, 0.0, 3.0e5];
+    /// out.totals.stiffness[3] = [3.0e5, 0.0, 0.0, 4.0e3];
     /// let k: Matrix4<f32> = out.stiffness_matrix();
     /// assert_eq!(k[(0, 1)], 1.0e6);
     /// assert_eq!(k[(3, 0)], 3.0e5);
@@ -75,8 +75,8 @@ impl<const Z: usize> BearingOutput<Z> {
     /// use nalgebra::Matrix2;
     ///
     /// let mut out = BearingOutput::<17>::ZERO;
-    /// out.stiffness[0] = [2.0e8, 1.0e6, 7.0, 7.0];
-    /// out.stiffness[1] = [1.5e6, 3.0e8, 7.0, 7.0];
+    /// out.totals.stiffness[0] = [2.0e8, 1.0e6, 7.0, 7.0];
+    /// out.totals.stiffness[1] = [1.5e6, 3.0e8, 7.0, 7.0];
     /// assert_eq!(
     ///     out.radial_stiffness_matrix_n_per_m(),
     ///     Matrix2::new(2.0e8, 1.0e6, 1.5e6, 3.0e8)
@@ -94,7 +94,7 @@ impl<const Z: usize> BearingOutput<Z> {
     /// use nalgebra::Matrix2;
     ///
     /// let mut out = BearingOutput::<17>::ZERO;
-    /// out.damping_n_s_per_m = [[400.0, 10.0], [20.0, 800.0]];
+    /// out.totals.damping_n_s_per_m = [[400.0, 10.0], [20.0, 800.0]];
     /// assert_eq!(out.damping_matrix_n_s_per_m(), Matrix2::new(400.0, 10.0, 20.0, 800.0));
     /// ```
     pub fn damping_matrix_n_s_per_m(&self) -> Matrix2<f32> {
