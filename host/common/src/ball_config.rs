@@ -14,8 +14,8 @@ use bearing_core::bearing::ball::{
 use bearing_core::ParamError;
 use serde::{Deserialize, Serialize};
 
-use crate::config::ConfigError;
-use crate::toml_lines::{self, TomlLines};
+use crate::config::{deserialize_config, read_config, ConfigError};
+use crate::toml_lines::TomlLines;
 
 /// Whether the configuration `text` describes a ball bearing (it has a `[ball]` table).
 pub fn is_ball_config(text: &str) -> bool {
@@ -148,26 +148,12 @@ pub const BALL_COUNT_RANGE: (u16, u16) = (3, 40);
 impl BallBearingConfig {
     /// Read and validate a ball-bearing configuration file.
     pub fn load(path: &Path) -> Result<(Self, BallBearingParams), ConfigError> {
-        let text = std::fs::read_to_string(path).map_err(|e| ConfigError {
-            path: path.to_owned(),
-            line: None,
-            field: None,
-            message: format!("cannot read: {e}"),
-        })?;
-        Self::parse(&text, path)
+        Self::parse(&read_config(path)?, path)
     }
 
     /// Parse and validate configuration `text`; `path` is only used in errors.
     pub fn parse(text: &str, path: &Path) -> Result<(Self, BallBearingParams), ConfigError> {
-        let config: BallBearingConfig = toml::from_str(text).map_err(|e| {
-            let line = e.span().map(|s| toml_lines::line_at(text, s.start));
-            ConfigError {
-                path: path.to_owned(),
-                line,
-                field: line.and_then(|l| toml_lines::key_on_line(text, l)),
-                message: e.message().trim().to_owned(),
-            }
-        })?;
+        let config: BallBearingConfig = deserialize_config(text, path)?;
         let lines = TomlLines::new(text);
         let located = |table: &str, key: &str, message: String| ConfigError {
             path: path.to_owned(),

@@ -303,29 +303,42 @@ impl fmt::Display for ConfigError {
 
 impl std::error::Error for ConfigError {}
 
+/// The text of the configuration file `path`, or an error naming it.
+pub(crate) fn read_config(path: &Path) -> Result<String, ConfigError> {
+    std::fs::read_to_string(path).map_err(|e| ConfigError {
+        path: path.to_owned(),
+        line: None,
+        field: None,
+        message: format!("cannot read: {e}"),
+    })
+}
+
+/// A configuration table deserialized from `text`; a syntax or type error is located by the
+/// line and key the TOML parser points at (`path` is only used in errors).
+pub(crate) fn deserialize_config<T: serde::de::DeserializeOwned>(
+    text: &str,
+    path: &Path,
+) -> Result<T, ConfigError> {
+    toml::from_str(text).map_err(|e| {
+        let line = e.span().map(|s| toml_lines::line_at(text, s.start));
+        ConfigError {
+            path: path.to_owned(),
+            line,
+            field: line.and_then(|l| toml_lines::key_on_line(text, l)),
+            message: e.message().trim().to_owned(),
+        }
+    })
+}
+
 impl BearingConfig {
     /// Read and validate a configuration file.
     pub fn load(path: &Path) -> Result<(Self, BearingParams), ConfigError> {
-        let text = std::fs::read_to_string(path).map_err(|e| ConfigError {
-            path: path.to_owned(),
-            line: None,
-            field: None,
-            message: format!("cannot read: {e}"),
-        })?;
-        Self::parse(&text, path)
+        Self::parse(&read_config(path)?, path)
     }
 
     /// Parse and validate configuration `text`; `path` is only used in errors.
     pub fn parse(text: &str, path: &Path) -> Result<(Self, BearingParams), ConfigError> {
-        let config: BearingConfig = toml::from_str(text).map_err(|e| {
-            let line = e.span().map(|s| toml_lines::line_at(text, s.start));
-            ConfigError {
-                path: path.to_owned(),
-                line,
-                field: line.and_then(|l| toml_lines::key_on_line(text, l)),
-                message: e.message().trim().to_owned(),
-            }
-        })?;
+        let config: BearingConfig = deserialize_config(text, path)?;
         let lines = TomlLines::new(text);
         let law = config.model.contact_law.as_str();
         if !CONTACT_LAWS.contains(&law) {
