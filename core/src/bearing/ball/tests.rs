@@ -63,18 +63,7 @@ pub(super) fn ellipticity_reference(rx: f64, ry: f64) -> f64 {
 /// Hertz in f64: (compliance c of δ = c Q^⅔, a/Q^⅓, b/Q^⅓) for radii R_x, R_y and E', with
 /// k solved by bisection on R_y/R_x = (k²E − K)/(K − E) (Johnson 1985, eq. 4.39).
 fn hertz_reference(rx: f64, ry: f64, modulus: f64) -> (f64, f64, f64) {
-    let ratio = ry / rx;
-    let (mut lo, mut hi) = (1.0_f64, 30.0_f64);
-    for _ in 0..100 {
-        let k = 0.5 * (lo + hi);
-        let (kk, ee) = integrals_by_quadrature(1.0 - 1.0 / (k * k));
-        if (k * k * ee - kk) / (kk - ee) < ratio {
-            lo = k;
-        } else {
-            hi = k;
-        }
-    }
-    let k = 0.5 * (lo + hi);
+    let k = ellipticity_reference(rx, ry);
     let (kk, ee) = integrals_by_quadrature(1.0 - 1.0 / (k * k));
     let r = 1.0 / (1.0 / rx + 1.0 / ry);
     let pi = core::f64::consts::PI;
