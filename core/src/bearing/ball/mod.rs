@@ -362,8 +362,7 @@ impl<const Z: usize> BallBearing<Z> {
         let inner = RaceContact::new(p, cos_alpha, true);
         let outer = RaceContact::new(p, cos_alpha, false);
         let compliance = inner.compliance + outer.compliance;
-        let gamma = p.ball_diameter_m * cos_alpha / p.pitch_diameter_m;
-        let entrainment = 0.25 * p.pitch_diameter_m * omega.abs() * (1.0 - gamma * gamma);
+        let entrainment = p.entrainment_speed_m_s(cos_alpha, omega);
         // Q = (δ/c)^{3/2}, δ = δ_g + H(Q): Newton on λ = ln Q (module doc). Each film call
         // anchors a local power law H(λ) = H_n e^{p(λ − λ_n)}, p Hamrock–Dowson's load
         // exponent, on which a few Newton steps (no film call) solve the equation.
@@ -504,15 +503,21 @@ impl Totals<'_> {
 }
 
 impl BallBearingParams {
+    /// Entrainment speed of both contacts of a ball at cos α = `cos_alpha`, outer-raceway
+    /// control with the outer ring fixed: u_m = (d_m |ω|/4)(1 − γ²), γ = D cos α / d_m (m/s).
+    #[inline]
+    fn entrainment_speed_m_s(&self, cos_alpha: f32, shaft_speed_rad_s: f32) -> f32 {
+        let gamma = self.ball_diameter_m * cos_alpha / self.pitch_diameter_m;
+        0.25 * self.pitch_diameter_m * shaft_speed_rad_s.abs() * (1.0 - gamma * gamma)
+    }
+
     /// The inner and the outer contact of a ball carrying `load_n` at the nominal (deep
     /// groove: free) contact angle, the shaft at `shaft_speed_rad_s`: the point-film inputs
     /// `bearing film --config` reports on.
     pub fn contact_inputs(&self, load_n: f32, shaft_speed_rad_s: f32) -> [PointContactInput; 2] {
         let p = self;
         let (_, cos_alpha) = sin_cos(p.nominal_contact_angle_rad);
-        let gamma = p.ball_diameter_m * cos_alpha / p.pitch_diameter_m;
-        let entrainment =
-            0.25 * p.pitch_diameter_m * shaft_speed_rad_s.abs() * (1.0 - gamma * gamma);
+        let entrainment = p.entrainment_speed_m_s(cos_alpha, shaft_speed_rad_s);
         [true, false]
             .map(|inner| RaceContact::new(p, cos_alpha, inner).film_input(p, load_n, entrainment))
     }
